@@ -1,0 +1,297 @@
+#include "config_reader.hpp"
+
+#include "errors.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace morphogen {
+
+using nlohmann::json;
+
+void ConfigIssues::add(std::string path, std::string message) {
+    issues_.push_back({std::move(path), std::move(message)});
+}
+
+std::string ConfigIssues::format(const std::string& source) const {
+    std::string out;
+    for (const auto& issue : issues_) {
+        if (!out.empty()) out += '\n';
+        out += source;
+        out += ": ";
+        if (!issue.path.empty()) out += issue.path + ": ";
+        out += issue.message;
+    }
+    return out;
+}
+
+void ConfigIssues::throw_if_any(const std::string& source) const {
+    if (!issues_.empty()) throw ConfigError(format(source));
+}
+
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            const std::size_t above = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = above;
+        }
+    }
+    return row[b.size()];
+}
+
+std::optional<std::string> nearest(const std::string& word, const std::vector<std::string>& candidates) {
+    std::optional<std::string> best;
+    std::size_t best_distance = std::max<std::size_t>(2, word.size() / 3) + 1;
+    for (const auto& candidate : candidates) {
+        const std::size_t d = edit_distance(word, candidate);
+        if (d < best_distance) {
+            best_distance = d;
+            best = candidate;
+        }
+    }
+    return best;
+}
+
+namespace {
+std::string show(const json& value) {
+    std::string text = value.dump();
+    if (text.size() > 60) text = text.substr(0, 57) + "...";
+    return text;
+}
+std::string type_name(const json& value) {
+    return value.type_name();
+}
+std::string show_number(double v) {
+    std::ostringstream s;
+    s << v;
+    return s.str();
+}
+}  // namespace
+
+ObjectReader::ObjectReader(const json* object, std::string path, ConfigIssues& issues)
+    : object_(object), path_(std::move(path)), issues_(issues) {
+    if (object_ != nullptr && object_->is_null()) object_ = nullptr;
+    if (object_ != nullptr && !object_->is_object()) {
+        issues_.add(path_, "expected an object, got " + type_name(*object_) + " " + show(*object_));
+        object_ = nullptr;
+    }
+}
+
+std::string ObjectReader::path_of(const std::string& key) const {
+    return path_.empty() ? key : path_ + "." + key;
+}
+
+const json* ObjectReader::find(const std::string& key) {
+    known_.push_back(key);
+    if (object_ == nullptr) return nullptr;
+    auto it = object_->find(key);
+    return it == object_->end() ? nullptr : &*it;
+}
+
+double ObjectReader::number(const std::string& key, double fallback, double min, double max,
+                            bool min_exclusive) {
+    const json* value = find(key);
+    double result = fallback;
+    if (value != nullptr) {
+        if (!value->is_number()) {
+            issues_.add(path_of(key), "expected a number, got " + type_name(*value) + " " + show(*value));
+        } else {
+            const double v = value->get<double>();
+            const bool below = min_exclusive ? !(v > min) : !(v >= min);
+            if (!std::isfinite(v) || below || v > max) {
+                std::string range(min_exclusive ? "(" : "[");
+                range += show_number(min) + ", " + show_number(max) + "]";
+                issues_.add(path_of(key), show(*value) + " is out of range " + range);
+            } else {
+                result = v;
+            }
+        }
+    }
+    resolved_[key] = result;
+    return result;
+}
+
+long long ObjectReader::integer(const std::string& key, long long fallback, long long min, long long max) {
+    const json* value = find(key);
+    long long result = fallback;
+    if (value != nullptr) {
+        const bool integral = value->is_number_integer() ||
+                              (value->is_number_float() && std::floor(value->get<double>()) == value->get<double>() &&
+                               std::abs(value->get<double>()) < 9e15);
+        if (!integral) {
+            issues_.add(path_of(key), "expected an integer, got " + type_name(*value) + " " + show(*value));
+        } else {
+            const bool huge = value->is_number_unsigned() &&
+                              value->get<unsigned long long>() > static_cast<unsigned long long>(max);
+            const long long v = huge ? max : value->is_number_float() ? static_cast<long long>(value->get<double>())
+                                                                       : value->get<long long>();
+            if (huge || v < min || v > max) {
+                issues_.add(path_of(key), show(*value) + " is out of range [" + std::to_string(min) + ", " +
+                                              std::to_string(max) + "]");
+            } else {
+                result = v;
+            }
+        }
+    }
+    resolved_[key] = result;
+    return result;
+}
+
+bool ObjectReader::boolean(const std::string& key, bool fallback) {
+    const json* value = find(key);
+    bool result = fallback;
+    if (value != nullptr) {
+        if (!value->is_boolean())
+            issues_.add(path_of(key), "expected true or false, got " + type_name(*value) + " " + show(*value));
+        else
+            result = value->get<bool>();
+    }
+    resolved_[key] = result;
+    return result;
+}
+
+std::string ObjectReader::string(const std::string& key, const std::string& fallback) {
+    const json* value = find(key);
+    std::string result = fallback;
+    if (value != nullptr) {
+        if (!value->is_string())
+            issues_.add(path_of(key), "expected a string, got " + type_name(*value) + " " + show(*value));
+        else
+            result = value->get<std::string>();
+    }
+    resolved_[key] = result;
+    return result;
+}
+
+std::string ObjectReader::choice(const std::string& key, const std::string& fallback,
+                                 const std::vector<std::string>& allowed) {
+    const bool present = object_ != nullptr && object_->contains(key);
+    std::string result = string(key, fallback);
+    if (present && std::find(allowed.begin(), allowed.end(), result) == allowed.end() &&
+        (*object_)[key].is_string()) {
+        std::string list;
+        for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + ("\"" + a + "\"");
+        std::string message = "\"" + result + "\" is not one of " + list;
+        if (auto near = nearest(result, allowed)) message += " (did you mean \"" + *near + "\"?)";
+        issues_.add(path_of(key), message);
+        result = fallback;
+        resolved_[key] = result;
+    }
+    return result;
+}
+
+std::vector<long long> ObjectReader::integer_list(const std::string& key, const std::vector<long long>& fallback,
+                                                  long long min, long long max) {
+    const json* value = find(key);
+    std::vector<long long> result = fallback;
+    if (value != nullptr) {
+        if (!value->is_array()) {
+            issues_.add(path_of(key), "expected a list of integers, got " + type_name(*value) + " " + show(*value));
+        } else {
+            std::vector<long long> items;
+            bool ok = true;
+            for (std::size_t i = 0; i < value->size(); ++i) {
+                const json& item = (*value)[i];
+                const std::string item_path = path_of(key) + "[" + std::to_string(i) + "]";
+                if (!item.is_number_integer()) {
+                    issues_.add(item_path, "expected an integer, got " + type_name(item) + " " + show(item));
+                    ok = false;
+                } else if (item.get<long long>() < min || item.get<long long>() > max) {
+                    issues_.add(item_path, show(item) + " is out of range [" + std::to_string(min) + ", " +
+                                               std::to_string(max) + "]");
+                    ok = false;
+                } else {
+                    items.push_back(item.get<long long>());
+                }
+            }
+            if (ok) result = items;
+        }
+    }
+    resolved_[key] = result;
+    return result;
+}
+
+std::vector<double> ObjectReader::number_list(const std::string& key, const std::vector<double>& fallback,
+                                              double min, double max) {
+    const json* value = find(key);
+    std::vector<double> result = fallback;
+    if (value != nullptr) {
+        if (!value->is_array()) {
+            issues_.add(path_of(key), "expected a list of numbers, got " + type_name(*value) + " " + show(*value));
+        } else {
+            std::vector<double> items;
+            bool ok = true;
+            for (std::size_t i = 0; i < value->size(); ++i) {
+                const json& item = (*value)[i];
+                const std::string item_path = path_of(key) + "[" + std::to_string(i) + "]";
+                if (!item.is_number()) {
+                    issues_.add(item_path, "expected a number, got " + type_name(item) + " " + show(item));
+                    ok = false;
+                } else if (!(item.get<double>() >= min && item.get<double>() <= max)) {
+                    issues_.add(item_path, show(item) + " is out of range [" + show_number(min) + ", " +
+                                               show_number(max) + "]");
+                    ok = false;
+                } else {
+                    items.push_back(item.get<double>());
+                }
+            }
+            if (ok) result = items;
+        }
+    }
+    resolved_[key] = result;
+    return result;
+}
+
+const json* ObjectReader::raw(const std::string& key) { return find(key); }
+
+void ObjectReader::set_resolved(const std::string& key, json value) { resolved_[key] = std::move(value); }
+
+void ObjectReader::finish() {
+    if (object_ == nullptr) return;
+    for (const auto& [key, value] : object_->items()) {
+        if (std::find(known_.begin(), known_.end(), key) != known_.end()) continue;
+        std::string message = "unknown key \"" + key + "\"";
+        if (auto near = nearest(key, known_)) message += " (did you mean \"" + *near + "\"?)";
+        issues_.add(path_of(key), message);
+    }
+}
+
+json parse_json_text(const std::string& text, const std::string& source) {
+    try {
+        return json::parse(text);
+    } catch (const json::parse_error& e) {
+        // Translate the byte offset into line and column for the user.
+        const std::size_t offset = e.byte == 0 ? 0 : std::min<std::size_t>(e.byte - 1, text.size());
+        std::size_t line = 1, column = 1;
+        for (std::size_t i = 0; i < offset; ++i) {
+            if (text[i] == '\n') {
+                ++line;
+                column = 1;
+            } else {
+                ++column;
+            }
+        }
+        std::string what = e.what();
+        if (auto pos = what.find("syntax error"); pos != std::string::npos) what = what.substr(pos);
+        throw ConfigError(source + ": invalid JSON at line " + std::to_string(line) + ", column " +
+                          std::to_string(column) + ": " + what);
+    }
+}
+
+json load_json_file(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw IoError(path + ": cannot open for reading");
+    std::ostringstream buffer;
+    buffer << in.rdbuf();
+    if (in.bad()) throw IoError(path + ": read failed");
+    return parse_json_text(buffer.str(), path);
+}
+
+}  // namespace morphogen

@@ -1,0 +1,68 @@
+#pragma once
+// Growth (ALGORITHM.md §3-§4): the network, copied at every vertex, grows a
+// seed mesh step by step: think, move, split, flip. Deterministic: the same
+// network, parameters and seed give the same mesh bit for bit.
+#include "growth_params.hpp"
+#include "mesh.hpp"
+#include "network.hpp"
+#include "seeds.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace morphogen {
+
+struct GrowthState {
+    TriMesh mesh;
+    std::vector<Vec3> directions;  // h_i, unit, fixed for the vertex's life
+    Eigen::MatrixXd outputs;       // N x V: w_i per column, in (0,1)
+    int steps_done = 0;
+};
+
+// Seconds spent in each phase (accumulated over calls).
+struct PhaseTimes {
+    double gather = 0, think = 0, move = 0, split = 0, flip = 0;
+    std::uint64_t vertex_steps = 0;  // sum over steps of the vertices that thought
+    double total() const { return gather + think + move + split + flip; }
+    PhaseTimes& operator+=(const PhaseTimes& o);
+};
+
+// Reusable per-thread buffers, so growing many genomes does not reallocate.
+struct GrowthWorkspace {
+    Eigen::MatrixXd inputs;        // 3N x V
+    Eigen::MatrixXd next_outputs;  // N x V
+    std::vector<int> neighbours;
+    NetworkWorkspace network;
+};
+
+// Called after every step with the step index t; for tests and animation.
+using StepObserver = std::function<void(const GrowthState&, int step)>;
+
+class Grower {
+public:
+    // Throws ConfigError if the network does not fit (inputs != 3 * outputs, N < 3).
+    Grower(const Network& network, const GrowthParams& params);
+
+    // The state before step 0: the seed with every output 0.5.
+    GrowthState start(const Seed& seed) const;
+    // One timestep t (§4) applied to `state`.
+    void step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times = nullptr) const;
+    // start() then params.steps steps.
+    GrowthState grow(const Seed& seed, GrowthWorkspace& workspace, PhaseTimes* times = nullptr,
+                     const StepObserver& observer = {}) const;
+
+private:
+    void gather(const GrowthState& state, GrowthWorkspace& workspace) const;
+    void move(GrowthState& state) const;
+    void split(GrowthState& state) const;
+    void flip(GrowthState& state) const;
+
+    const Network& network_;
+    GrowthParams params_;
+    FlipCriteria flip_criteria_;
+};
+
+}  // namespace morphogen

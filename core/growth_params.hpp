@@ -1,0 +1,37 @@
+#pragma once
+// The `network` and `growth` config sections (ALGORITHM.md; every constant a
+// key, defaults as documented in docs/config.md and configs/schema.json).
+#include "config_reader.hpp"
+
+#include <string>
+#include <vector>
+
+namespace morphogen {
+
+struct NetworkParams {
+    int outputs = 15;             // network.outputs (N >= 3)
+    std::vector<int> hidden{30};  // network.hidden
+    std::vector<int> layers() const;  // [3N, hidden..., N]
+};
+
+struct GrowthParams {
+    int steps = 200;
+    double speed = 0.2;
+    double budget = 20.0;
+    bool ground = true;
+    double split_area = 0.75;
+    int max_vertices = 4000;
+    int flip_every = 1;
+    double flip_max_angle_deg = 30.0;
+    int min_valence = 4;
+    double height_scale = 10.0;
+    std::string seed_mesh = "icosahedron";  // built-in name or a mesh file path
+    double seed_radius = 1.0;
+};
+
+// Read a section; problems are added to reader.issues(), defaults fill gaps.
+// Both call reader.finish().
+NetworkParams read_network_params(ObjectReader& reader);
+GrowthParams read_growth_params(ObjectReader& reader);
+
+}  // namespace morphogen

@@ -1,0 +1,113 @@
+#include "network.hpp"
+
+#include "errors.hpp"
+
+#include <cmath>
+
+namespace morphogen {
+
+std::size_t parameter_count(std::span<const int> layers) {
+    std::size_t count = 0;
+    for (std::size_t l = 1; l < layers.size(); ++l)
+        count += static_cast<std::size_t>(layers[l]) * (static_cast<std::size_t>(layers[l - 1]) + 1);
+    return count;
+}
+
+std::vector<std::pair<std::size_t, std::size_t>> neuron_blocks(std::span<const int> layers) {
+    std::vector<std::pair<std::size_t, std::size_t>> blocks;
+    std::size_t offset = 0;
+    for (std::size_t l = 1; l < layers.size(); ++l) {
+        const std::size_t length = static_cast<std::size_t>(layers[l - 1]) + 1;
+        for (int j = 0; j < layers[l]; ++j) {
+            blocks.emplace_back(offset, length);
+            offset += length;
+        }
+    }
+    return blocks;
+}
+
+std::vector<int> layer_sizes(int outputs, std::span<const int> hidden) {
+    std::vector<int> layers{3 * outputs};
+    layers.insert(layers.end(), hidden.begin(), hidden.end());
+    layers.push_back(outputs);
+    return layers;
+}
+
+Network::Network(const Genome& genome) : layers_(genome.layers), params_(genome.params) {
+    if (layers_.size() < 2) throw ConfigError("network: needs at least an input and an output layer");
+    for (std::size_t l = 0; l < layers_.size(); ++l)
+        if (layers_[l] < 1)
+            throw ConfigError("network: layer " + std::to_string(l) + " has " + std::to_string(layers_[l]) +
+                              " neurons");
+    if (params_.size() != parameter_count(layers_))
+        throw ConfigError("network: layers need " + std::to_string(parameter_count(layers_)) +
+                          " parameters, the genome has " + std::to_string(params_.size()));
+    for (std::size_t i = 0; i < params_.size(); ++i)
+        if (!std::isfinite(params_[i]))
+            throw ConfigError("network: parameter " + std::to_string(i) + " is not finite");
+
+    std::size_t offset = 0;
+    for (std::size_t l = 1; l < layers_.size(); ++l) {
+        const int in = layers_[l - 1], out = layers_[l];
+        Eigen::MatrixXd weights(out, in);
+        Eigen::VectorXd bias(out);
+        for (int j = 0; j < out; ++j) {
+            double weight_sum = 0.0;
+            for (int k = 0; k < in; ++k) {
+                weights(j, k) = params_[offset + k];
+                weight_sum += params_[offset + k];
+            }
+            const double threshold = params_[offset + in];
+            // a = -t + sum (x - 0.5) w = sum x w + (-t - 0.5 sum w): the 0.5 is folded once.
+            bias(j) = -threshold - 0.5 * weight_sum;
+            offset += static_cast<std::size_t>(in) + 1;
+        }
+        weights_.push_back(std::move(weights));
+        biases_.push_back(std::move(bias));
+    }
+}
+
+void Network::evaluate(Eigen::Ref<const Eigen::MatrixXd> input, Eigen::Ref<Eigen::MatrixXd> output,
+                       NetworkWorkspace& workspace) const {
+    const std::size_t L = weights_.size();
+    const Eigen::Index V = input.cols();
+    auto layer = [&](std::size_t l, const auto& in, auto& out) {
+        out.noalias() = weights_[l] * in;
+        out.colwise() += biases_[l];
+        out = (1.0 + (-out.array()).exp()).inverse().matrix();
+    };
+    if (L == 1) {
+        layer(0, input, output);
+        return;
+    }
+    workspace.buffer_a.resize(weights_[0].rows(), V);
+    layer(0, input, workspace.buffer_a);
+    Eigen::MatrixXd* current = &workspace.buffer_a;
+    Eigen::MatrixXd* spare = &workspace.buffer_b;
+    for (std::size_t l = 1; l + 1 < L; ++l) {
+        spare->resize(weights_[l].rows(), V);
+        layer(l, *current, *spare);
+        std::swap(current, spare);
+    }
+    layer(L - 1, *current, output);
+}
+
+std::vector<double> Network::evaluate_reference(std::span<const double> input) const {
+    std::vector<double> value(input.begin(), input.end());
+    std::size_t offset = 0;
+    for (std::size_t l = 1; l < layers_.size(); ++l) {
+        const int in = layers_[l - 1], out = layers_[l];
+        std::vector<double> next(out);
+        for (int j = 0; j < out; ++j) {
+            const double* weights = &params_[offset];
+            double a = -weights[in];  // -threshold
+            for (int k = 0; k < in; ++k) a += (value[k] - 0.5) * weights[k];
+            next[j] = 1.0 / (1.0 + std::exp(-a));
+            offset += static_cast<std::size_t>(in) + 1;
+        }
+        value = std::move(next);
+    }
+    return value;
+}
+
+}  // namespace morphogen

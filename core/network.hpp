@@ -1,0 +1,64 @@
+#pragma once
+// The cellular network of ALGORITHM.md §2: one feed-forward net, identical at
+// every vertex. Layer sizes [3N, hidden..., N]; each neuron computes
+//   sigmoid(-threshold + sum_k (in_k - 0.5) * weight_k).
+// Genome layout: for each layer l = 1..L, for each neuron j, its weights
+// weight_j0..weight_j(n-1) then its threshold.
+#include <cstddef>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Core>
+
+namespace morphogen {
+
+struct Genome {
+    std::vector<int> layers;     // neuron counts, input layer first
+    std::vector<double> params;  // parameter_count(layers) numbers
+};
+
+// Number of parameters for these layer sizes.
+std::size_t parameter_count(std::span<const int> layers);
+// [offset, length) of each neuron's weights+threshold in the genome, all layers
+// in genome order: the unit that crossover exchanges.
+std::vector<std::pair<std::size_t, std::size_t>> neuron_blocks(std::span<const int> layers);
+// Layer sizes from the config: [3*outputs, hidden..., outputs].
+std::vector<int> layer_sizes(int outputs, std::span<const int> hidden);
+
+// Scratch space reused across evaluations (one per thread).
+struct NetworkWorkspace {
+    Eigen::MatrixXd buffer_a, buffer_b;
+};
+
+class Network {
+public:
+    // Throws ConfigError if the genome's size does not match its layers, a
+    // layer is empty, or a parameter is not finite.
+    explicit Network(const Genome& genome);
+
+    int inputs() const { return layers_.front(); }
+    int outputs() const { return layers_.back(); }
+    const std::vector<int>& layers() const { return layers_; }
+
+    // Batched evaluation of `input.cols()` vertices at once: input is
+    // inputs() x V, output becomes outputs() x V. Agrees with
+    // evaluate_reference() to ~1e-15 relative.
+    // `output` must already have outputs() rows and input.cols() columns.
+    void evaluate(Eigen::Ref<const Eigen::MatrixXd> input, Eigen::Ref<Eigen::MatrixXd> output,
+                  NetworkWorkspace& workspace) const;
+
+    // The paper's pseudocode for one vertex, literally; the reference for tests.
+    std::vector<double> evaluate_reference(std::span<const double> input) const;
+
+private:
+    std::vector<int> layers_;
+    std::vector<double> params_;
+    // Per layer: weights (out x in, row j = neuron j) and the folded bias
+    // b_j = -threshold_j - 0.5 * sum_k weight_jk, so a = W x + b.
+    std::vector<Eigen::MatrixXd> weights_;
+    std::vector<Eigen::VectorXd> biases_;
+};
+
+}  // namespace morphogen

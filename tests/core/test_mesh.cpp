@@ -1,0 +1,188 @@
+#include "mesh.hpp"
+#include "seeds.hpp"
+#include "support/test_meshes.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numbers>
+
+using namespace morphogen;
+using namespace morphogen::testing;
+
+namespace {
+
+// Base case: a flat rhombus base whose long diagonal Q0-Q2 may flip.
+MeshArrays flippable() { return pyramid({-2, 0, 0}, {0, -1, 0}, {2, 0, 0}, {0, 1, 0}); }
+
+// Flip the base diagonal Q0 -> Q2 (half-edge in face (Q0,Q2,Q1)).
+bool flip_base(TriMesh& mesh, const FlipCriteria& criteria) {
+    const auto [f, e] = find_half_edge(mesh, 0, 2);
+    REQUIRE(f >= 0);
+    return mesh.try_flip(f, e, criteria);
+}
+
+FlipCriteria lenient() {
+    FlipCriteria c;
+    c.min_valence = 3;
+    return c;
+}
+
+}  // namespace
+
+TEST_CASE("from_arrays accepts closed oriented spheres and rejects defects", "[mesh]") {
+    CHECK_NOTHROW(TriMesh::from_arrays(flippable()));
+    MeshArrays open = flippable();
+    open.faces.pop_back();
+    CHECK_THROWS_WITH(TriMesh::from_arrays(open, "open.obj"), Catch::Contains("open.obj") && Catch::Contains("open"));
+    MeshArrays flipped = flippable();
+    std::swap(flipped.faces[0][0], flipped.faces[0][1]);
+    CHECK_THROWS_WITH(TriMesh::from_arrays(flipped), Catch::Contains("same direction"));
+    MeshArrays degenerate = flippable();
+    degenerate.faces[0] = {0, 0, 4};
+    CHECK_THROWS_WITH(TriMesh::from_arrays(degenerate), Catch::Contains("degenerate"));
+    MeshArrays out_of_range = flippable();
+    out_of_range.faces[0][2] = 9;
+    CHECK_THROWS_WITH(TriMesh::from_arrays(out_of_range), Catch::Contains("out of range"));
+    // Two disjoint tetrahedra: closed and oriented, but not one sphere.
+    MeshArrays two;
+    TriMesh tet = builtin_seed_mesh("tetrahedron", 1);
+    for (int copy = 0; copy < 2; ++copy) {
+        for (const Vec3& p : tet.positions()) two.positions.push_back(p + Vec3(5.0 * copy, 0, 0));
+        for (Face f : tet.faces()) two.faces.push_back({f[0] + 4 * copy, f[1] + 4 * copy, f[2] + 4 * copy});
+    }
+    CHECK_THROWS_WITH(TriMesh::from_arrays(two), Catch::Contains("not connected"));
+    MeshArrays nan = flippable();
+    nan.positions[1].x() = std::nan("");
+    CHECK_THROWS_WITH(TriMesh::from_arrays(nan), Catch::Contains("non-finite"));
+}
+
+TEST_CASE("split keeps every invariant and wires the new faces as specified", "[mesh]") {
+    TriMesh mesh = builtin_seed_mesh("icosahedron", 1.0);
+    const Face before = mesh.face(3);
+    const int v = mesh.split_face(3, mesh.face_centroid(3));
+    CHECK(v == 12);
+    CHECK(mesh.face(3) == Face{before[0], before[1], v});
+    CHECK(mesh.face(20) == Face{before[1], before[2], v});
+    CHECK(mesh.face(21) == Face{before[2], before[0], v});
+    CHECK(mesh.valence(v) == 3);
+    CHECK(mesh.check().empty());
+    // Split every face repeatedly, checking after each split.
+    for (int round = 0; round < 3; ++round) {
+        const int F = mesh.num_faces();
+        for (int f = 0; f < F; f += 2) {
+            mesh.split_face(f, mesh.face_centroid(f));
+            INFO("round " << round << " face " << f);
+            REQUIRE(mesh.check().empty());
+        }
+    }
+}
+
+TEST_CASE("the canonical flip rewrites f and g as specified", "[mesh][flip]") {
+    TriMesh mesh = TriMesh::from_arrays(flippable());
+    REQUIRE(flip_base(mesh, lenient()));
+    // f = (Q0,Q2,Q1): e = 0 -> B = Q0, D = Q2, A = Q1; g = (Q0,Q3,Q2), C = Q3.
+    CHECK(mesh.face(4) == Face{1, 0, 3});  // (A,B,C)
+    CHECK(mesh.face(5) == Face{3, 2, 1});  // (C,D,A)
+    CHECK(mesh.valence(0) == 3);
+    CHECK(mesh.valence(2) == 3);
+    CHECK(mesh.valence(1) == 4);
+    CHECK(mesh.valence(3) == 4);
+    CHECK(mesh.check().empty());
+}
+
+TEST_CASE("each flip condition alone blocks the flip", "[mesh][flip]") {
+    SECTION("f < g: the pair is only flipped from its lower face") {
+        TriMesh mesh = TriMesh::from_arrays(flippable());
+        const auto [g, e] = find_half_edge(mesh, 2, 0);  // the same edge seen from face 5
+        REQUIRE(g == 5);
+        CHECK_FALSE(mesh.try_flip(g, e, lenient()));
+    }
+    SECTION("|AC| < |BD|") {
+        TriMesh mesh = TriMesh::from_arrays(pyramid({-0.5, 0, 0}, {0, -2, 0}, {0.5, 0, 0}, {0, 2, 0}));
+        CHECK_FALSE(flip_base(mesh, lenient()));
+        // Equal lengths block too (strict inequality).
+        TriMesh square = TriMesh::from_arrays(pyramid({-1, 0, 0}, {0, -1, 0}, {1, 0, 0}, {0, 1, 0}));
+        CHECK_FALSE(flip_base(square, lenient()));
+    }
+    SECTION("the normals' angle") {
+        // Fold the base along Q0-Q2 by 2 * 10 degrees.
+        const double drop = std::tan(10.0 * std::numbers::pi / 180.0);
+        TriMesh folded = TriMesh::from_arrays(pyramid({-2, 0, 0}, {0, -1, -drop}, {2, 0, 0}, {0, 1, -drop}));
+        FlipCriteria wide = lenient();
+        wide.min_normal_dot = std::cos(25.0 * std::numbers::pi / 180.0);
+        FlipCriteria narrow = lenient();
+        narrow.min_normal_dot = std::cos(15.0 * std::numbers::pi / 180.0);
+        CHECK_FALSE(flip_base(folded, narrow));
+        CHECK(folded.check().empty());
+        CHECK(flip_base(folded, wide));
+    }
+    SECTION("the new faces' orientation (a non-convex quad)") {
+        TriMesh dart = TriMesh::from_arrays(pyramid({-2, 0, 0}, {-3, -0.1, 0}, {2, 0, 0}, {0, 1, 0}, {0, 0, 1}));
+        CHECK_FALSE(flip_base(dart, lenient()));
+    }
+    SECTION("valence of B and D") {
+        TriMesh mesh = TriMesh::from_arrays(flippable());
+        FlipCriteria strict = lenient();
+        strict.min_valence = 4;  // Q0 and Q2 have valence 4: not > 4
+        CHECK_FALSE(flip_base(mesh, strict));
+    }
+    SECTION("A and C already joined") {
+        // A flat tetrahedron: its two lower faces share Q0-Q2 and lie almost in
+        // one plane, but Q1-Q3 is already an edge (of the upper faces).
+        MeshArrays tet;
+        tet.positions = {{-2, 0, 0}, {0, -1, 0.01}, {2, 0, 0}, {0, 1, 0.01}};
+        tet.faces = {{0, 2, 1}, {0, 3, 2}, {0, 1, 3}, {1, 2, 3}};
+        TriMesh mesh = TriMesh::from_arrays(tet);
+        FlipCriteria criteria = lenient();
+        criteria.min_valence = 2;
+        CHECK_FALSE(flip_base(mesh, criteria));
+    }
+    SECTION("a zero-area face has no normal") {
+        TriMesh mesh = TriMesh::from_arrays(pyramid({-2, 0, 0}, {0, 0, 0}, {2, 0, 0}, {0, 1, 0}));
+        CHECK_FALSE(flip_base(mesh, lenient()));
+    }
+}
+
+TEST_CASE("random splits and flips keep every invariant", "[mesh]") {
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        RandomStream rng(seed, 7);
+        TriMesh mesh = builtin_seed_mesh(builtin_seed_names()[seed % 3], 1.0);
+        FlipCriteria criteria;
+        criteria.min_valence = 3;
+        criteria.min_normal_dot = -1.0;
+        int flips = 0;
+        for (int op = 0; op < 150; ++op) {
+            if (rng.uniform() < 0.4) {
+                const int f = static_cast<int>(rng.below(mesh.num_faces()));
+                Vec3 point = mesh.face_centroid(f) + 0.05 * mesh.face_cross(f).normalized();
+                mesh.split_face(f, point);
+            } else {
+                flips += mesh.try_flip(static_cast<int>(rng.below(mesh.num_faces())), static_cast<int>(rng.below(3)),
+                                       criteria);
+            }
+            INFO("seed " << seed << " op " << op);
+            REQUIRE(mesh.check().empty());
+        }
+        CHECK(flips > 0);
+    }
+}
+
+TEST_CASE("neighbour queries agree with the faces", "[mesh]") {
+    TriMesh mesh = builtin_seed_mesh("icosahedron", 1.0);
+    for (int f = 0; f < 20; f += 3) mesh.split_face(f, mesh.face_centroid(f));
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+        std::vector<int> around;
+        mesh.for_each_neighbour(v, [&](int u) { around.push_back(u); });
+        std::vector<int> expected;
+        for (const Face& f : mesh.faces())
+            for (int k = 0; k < 3; ++k)
+                if (f[k] == v) expected.push_back(f[(k + 1) % 3]);
+        std::sort(around.begin(), around.end());
+        std::sort(expected.begin(), expected.end());
+        CHECK(around == expected);
+        CHECK(mesh.valence(v) == static_cast<int>(expected.size()));
+        for (int u = 0; u < mesh.num_vertices(); ++u)
+            CHECK(mesh.adjacent(v, u) == std::binary_search(expected.begin(), expected.end(), u));
+    }
+}

@@ -1,0 +1,97 @@
+#include "errors.hpp"
+#include "genome_io.hpp"
+#include "network.hpp"
+#include "support/test_meshes.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <limits>
+
+using namespace morphogen;
+using namespace morphogen::testing;
+
+TEST_CASE("genome layout: sizes and neuron blocks", "[network]") {
+    const std::vector<int> layers = layer_sizes(15, std::vector<int>{30});
+    CHECK(layers == std::vector<int>{45, 30, 15});
+    CHECK(parameter_count(layers) == 1845);
+    const auto blocks = neuron_blocks(layers);
+    REQUIRE(blocks.size() == 45);
+    CHECK(blocks[0] == std::pair<std::size_t, std::size_t>{0, 46});
+    CHECK(blocks[30] == std::pair<std::size_t, std::size_t>{30 * 46, 31});
+    CHECK(blocks.back().first + blocks.back().second == 1845);
+    CHECK(parameter_count(std::vector<int>{9, 3}) == 30);
+}
+
+TEST_CASE("batched evaluation agrees with the paper's pseudocode to 1e-12", "[network]") {
+    const std::vector<std::vector<int>> shapes{{45, 30, 15}, {9, 3}, {12, 7, 5, 4}, {30, 1, 10}};
+    for (const auto& layers : shapes) {
+        for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+            const Network network(random_test_genome(layers, seed, 3.0));
+            RandomStream rng(seed, 99);
+            const int V = 1 + static_cast<int>(rng.below(200));
+            Eigen::MatrixXd inputs(layers.front(), V);
+            for (Eigen::Index i = 0; i < inputs.size(); ++i) inputs.data()[i] = rng.uniform(-0.5, 1.5);
+            Eigen::MatrixXd outputs(layers.back(), V);
+            NetworkWorkspace workspace;
+            network.evaluate(inputs, outputs, workspace);
+            for (int v = 0; v < V; ++v) {
+                const std::vector<double> column(inputs.col(v).data(), inputs.col(v).data() + layers.front());
+                const std::vector<double> expected = network.evaluate_reference(column);
+                for (int j = 0; j < layers.back(); ++j) {
+                    REQUIRE(std::abs(outputs(j, v) - expected[j]) <= 1e-12);
+                    REQUIRE(outputs(j, v) > 0.0);
+                    REQUIRE(outputs(j, v) < 1.0);
+                }
+            }
+        }
+    }
+}
+
+TEST_CASE("the reference evaluation is the pseudocode", "[network]") {
+    // One neuron, two inputs: sigmoid(-t + (x0 - .5) w0 + (x1 - .5) w1).
+    const Network network(Genome{{2, 1}, {0.7, -1.3, 0.25}});
+    const double a = -0.25 + (0.9 - 0.5) * 0.7 + (0.1 - 0.5) * -1.3;
+    const std::vector<double> out = network.evaluate_reference(std::vector<double>{0.9, 0.1});
+    CHECK(out[0] == Approx(1.0 / (1.0 + std::exp(-a))).epsilon(1e-15));
+}
+
+TEST_CASE("a network refuses a genome that does not fit its layers", "[network]") {
+    CHECK_THROWS_AS(Network(Genome{{45, 30, 15}, std::vector<double>(100, 0.0)}), ConfigError);
+    Genome nan = random_test_genome({9, 3}, 1);
+    nan.params[4] = std::numeric_limits<double>::quiet_NaN();
+    CHECK_THROWS_WITH(Network(nan), Catch::Contains("parameter 4"));
+    CHECK_THROWS_AS(Network(Genome{{9}, {}}), ConfigError);
+}
+
+TEST_CASE("genome files round-trip exactly", "[network][io]") {
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        Genome genome = random_test_genome({45, 30, 15}, seed, 1e3);
+        genome.params[0] = 1e-310;  // subnormal
+        genome.params[1] = -0.1;
+        genome.params[2] = 1.0 / 3.0;
+        const std::string path = temp_path("genome-" + std::to_string(seed) + ".json");
+        save_genome(genome, path);
+        const Genome back = load_genome(path);
+        CHECK(back.layers == genome.layers);
+        REQUIRE(back.params.size() == genome.params.size());
+        for (std::size_t i = 0; i < genome.params.size(); ++i) REQUIRE(back.params[i] == genome.params[i]);
+    }
+}
+
+TEST_CASE("bad genome files are refused with the file and the reason", "[network][io]") {
+    const std::string path = temp_path("bad-genome.json");
+    auto refused = [&](const std::string& text, const std::string& reason) {
+        write_text(path, text);
+        CHECK_THROWS_WITH(load_genome(path), Catch::Contains(path) && Catch::Contains(reason));
+    };
+    refused("{\"format\": \"morphogen-genome\", \"version\": 1, \"layers\": [2,1], \"params\": [1,2]}", "need 3");
+    refused("{\"format\": \"other\", \"version\": 1, \"layers\": [2,1], \"params\": [1,2,3]}", "format");
+    refused("{\"format\": \"morphogen-genome\", \"version\": 7, \"layers\": [2,1], \"params\": [1,2,3]}", "version 7");
+    refused("{\"format\": \"morphogen-genome\", \"version\": 1, \"layers\": [2,1], \"params\": [1,null,3]}",
+            "params[1]");
+    refused("{\"format\": \"morphogen-genome\", \"version\": 1, \"layers\": [2,0], \"params\": []}", "layer size 0");
+    refused("{\"format\": \"morphogen-genome\", \"version\": 1,\n \"layers\": [2,1] \"params\": [1,2,3]}", "line 2");
+    refused("[]", "object");
+    CHECK_THROWS_WITH(load_genome(temp_path("does-not-exist.json")), Catch::Contains("cannot open"));
+}

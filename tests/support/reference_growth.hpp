@@ -1,0 +1,134 @@
+#pragma once
+// A second, deliberately plain implementation of ALGORITHM.md §3-§4, written
+// straight from the text with different data structures (maps and sets, the
+// per-vertex pseudocode network). The growth tests check that the engine and
+// this agree to rounding error.
+#include "growth_params.hpp"
+#include "network.hpp"
+#include "seeds.hpp"
+
+#include <cmath>
+#include <map>
+#include <numbers>
+#include <set>
+#include <vector>
+
+namespace morphogen::testing {
+
+struct ReferenceGrowth {
+    std::vector<Vec3> x, h;
+    std::vector<Face> faces;
+    std::vector<std::vector<double>> w;
+
+    ReferenceGrowth(const Seed& seed, int outputs)
+        : x(seed.mesh.positions()), h(seed.directions), faces(seed.mesh.faces()),
+          w(x.size(), std::vector<double>(outputs, 0.5)) {}
+
+    void step(int t, const Network& net, const GrowthParams& p) {
+        const int V = static_cast<int>(x.size());
+        const int N = net.outputs();
+        // 1. Think.
+        std::vector<std::set<int>> nb(V);
+        for (const Face& f : faces)
+            for (int a : f)
+                for (int b : f)
+                    if (a != b) nb[a].insert(b);
+        std::vector<std::vector<double>> next(V);
+        for (int i = 0; i < V; ++i) {
+            std::vector<double> in(3 * N);
+            for (int c = 0; c < N; ++c) {
+                double mean = 0;
+                for (int j : nb[i]) mean += w[j][c];
+                mean /= static_cast<double>(nb[i].size());
+                double var = 0;
+                for (int j : nb[i]) var += (w[j][c] - mean) * (w[j][c] - mean);
+                var /= static_cast<double>(nb[i].size());
+                in[c] = w[i][c];
+                in[N + c] = mean;
+                in[2 * N + c] = std::sqrt(var);
+            }
+            in[3 * N - 4] = 0.5 + 0.5 * h[i].x();
+            in[3 * N - 3] = 0.5 + 0.5 * h[i].y();
+            in[3 * N - 2] = 0.5 + 0.5 * h[i].z();
+            in[3 * N - 1] = x[i].z() / p.height_scale;
+            next[i] = net.evaluate_reference(in);
+        }
+        w = next;
+        // 2. Move.
+        double S = 0;
+        for (int i = 0; i < V; ++i) S += std::max(0.0, w[i][0] - 0.5);
+        if (S > 0) {
+            const double k = std::min(p.speed, p.budget / S);
+            for (int i = 0; i < V; ++i) x[i] += k * std::max(0.0, w[i][0] - 0.5) * h[i];
+        }
+        if (p.ground)
+            for (Vec3& q : x) q.z() = std::max(q.z(), 0.0);
+        // 3. Split.
+        const int F0 = static_cast<int>(faces.size());
+        for (int f = 0; f < F0; ++f) {
+            const auto [a, b, c] = faces[f];
+            const Vec3 n = (x[b] - x[a]).cross(x[c] - x[a]);
+            const double area = 0.5 * n.norm();
+            if (!(static_cast<int>(x.size()) < p.max_vertices &&
+                  area > p.split_area * (0.5 + (w[a][1] + w[b][1] + w[c][1]) / 3.0)))
+                continue;
+            const int v = static_cast<int>(x.size());
+            x.push_back((x[a] + x[b] + x[c]) / 3.0);
+            std::vector<double> wv(N);
+            for (int k = 0; k < N; ++k) wv[k] = (w[a][k] + w[b][k] + w[c][k]) / 3.0;
+            w.push_back(wv);
+            const Vec3 nf = n.normalized();
+            const Vec3 sum = nf + w[a][2] * h[a] + w[b][2] * h[b] + w[c][2] * h[c];
+            h.push_back(sum.norm() < 1e-12 ? nf : Vec3(sum.normalized()));
+            faces[f] = {a, b, v};
+            faces.push_back({b, c, v});
+            faces.push_back({c, a, v});
+        }
+        // 4. Flip.
+        if ((t + 1) % p.flip_every != 0) return;
+        const double min_dot = std::cos(p.flip_max_angle_deg * std::numbers::pi / 180.0);
+        std::map<std::pair<int, int>, int> edge_face;  // directed edge -> face
+        std::vector<int> valence(x.size(), 0);
+        for (int f = 0; f < static_cast<int>(faces.size()); ++f)
+            for (int k = 0; k < 3; ++k) {
+                edge_face[{faces[f][k], faces[f][(k + 1) % 3]}] = f;
+                ++valence[faces[f][k]];
+            }
+        for (int f = 0; f < static_cast<int>(faces.size()); ++f) {
+            for (int e = 0; e < 3; ++e) {
+                const int B = faces[f][e], D = faces[f][(e + 1) % 3], A = faces[f][(e + 2) % 3];
+                const int g = edge_face.at({D, B});
+                int C = -1;
+                for (int k = 0; k < 3; ++k)
+                    if (faces[g][k] != D && faces[g][k] != B) C = faces[g][k];
+                if (!(f < g)) continue;
+                if (!((x[A] - x[C]).norm() < (x[B] - x[D]).norm())) continue;
+                const Vec3 c1 = (x[B] - x[A]).cross(x[D] - x[A]);
+                const Vec3 c2 = (x[C] - x[B]).cross(x[D] - x[B]);
+                if (c1.norm() == 0 || c2.norm() == 0) continue;
+                const Vec3 n1 = c1.normalized(), n2 = c2.normalized();
+                if (!(n1.dot(n2) >= min_dot)) continue;
+                if (!((x[B] - x[A]).cross(x[C] - x[A]).dot(n1 + n2) > 0)) continue;
+                if (!((x[D] - x[C]).cross(x[A] - x[C]).dot(n1 + n2) > 0)) continue;
+                if (!(valence[B] > p.min_valence && valence[D] > p.min_valence)) continue;
+                if (edge_face.count({A, C}) || edge_face.count({C, A})) continue;
+                for (int k = 0; k < 3; ++k) {
+                    edge_face.erase({faces[f][k], faces[f][(k + 1) % 3]});
+                    edge_face.erase({faces[g][k], faces[g][(k + 1) % 3]});
+                }
+                faces[f] = {A, B, C};
+                faces[g] = {C, D, A};
+                for (int k = 0; k < 3; ++k) {
+                    edge_face[{faces[f][k], faces[f][(k + 1) % 3]}] = f;
+                    edge_face[{faces[g][k], faces[g][(k + 1) % 3]}] = g;
+                }
+                --valence[B];
+                --valence[D];
+                ++valence[A];
+                ++valence[C];
+            }
+        }
+    }
+};
+
+}  // namespace morphogen::testing
