@@ -1,6 +1,7 @@
 #include "network.hpp"
 
 #include "errors.hpp"
+#include "network_kernel.hpp"
 
 #include <cmath>
 
@@ -49,17 +50,17 @@ Network::Network(const Genome& genome) : layers_(genome.layers), params_(genome.
     std::size_t offset = 0;
     for (std::size_t l = 1; l < layers_.size(); ++l) {
         const int in = layers_[l - 1], out = layers_[l];
-        Eigen::MatrixXd weights(out, in);
-        Eigen::VectorXd bias(out);
+        std::vector<double> weights(static_cast<std::size_t>(out) * in);
+        std::vector<double> bias(out);
         for (int j = 0; j < out; ++j) {
             double weight_sum = 0.0;
             for (int k = 0; k < in; ++k) {
-                weights(j, k) = params_[offset + k];
+                weights[static_cast<std::size_t>(j) * in + k] = params_[offset + k];
                 weight_sum += params_[offset + k];
             }
             const double threshold = params_[offset + in];
             // a = -t + sum (x - 0.5) w = sum x w + (-t - 0.5 sum w): the 0.5 is folded once.
-            bias(j) = -threshold - 0.5 * weight_sum;
+            bias[j] = -threshold - 0.5 * weight_sum;
             offset += static_cast<std::size_t>(in) + 1;
         }
         weights_.push_back(std::move(weights));
@@ -69,27 +70,11 @@ Network::Network(const Genome& genome) : layers_(genome.layers), params_(genome.
 
 void Network::evaluate(Eigen::Ref<const Eigen::MatrixXd> input, Eigen::Ref<Eigen::MatrixXd> output,
                        NetworkWorkspace& workspace) const {
-    const std::size_t L = weights_.size();
-    const Eigen::Index V = input.cols();
-    auto layer = [&](std::size_t l, const auto& in, auto& out) {
-        out.noalias() = weights_[l] * in;
-        out.colwise() += biases_[l];
-        out = (1.0 + (-out.array()).exp()).inverse().matrix();
-    };
-    if (L == 1) {
-        layer(0, input, output);
-        return;
-    }
-    workspace.buffer_a.resize(weights_[0].rows(), V);
-    layer(0, input, workspace.buffer_a);
-    Eigen::MatrixXd* current = &workspace.buffer_a;
-    Eigen::MatrixXd* spare = &workspace.buffer_b;
-    for (std::size_t l = 1; l + 1 < L; ++l) {
-        spare->resize(weights_[l].rows(), V);
-        layer(l, *current, *spare);
-        std::swap(current, spare);
-    }
-    layer(L - 1, *current, output);
+    std::vector<kernel::Layer> layers;
+    layers.reserve(weights_.size());
+    for (std::size_t l = 0; l < weights_.size(); ++l)
+        layers.push_back({layers_[l], layers_[l + 1], weights_[l].data(), biases_[l].data()});
+    kernel::evaluate(layers, input.data(), output.data(), input.cols(), workspace.scratch);
 }
 
 std::vector<double> Network::evaluate_reference(std::span<const double> input) const {

@@ -29,7 +29,7 @@ std::vector<int> layer_sizes(int outputs, std::span<const int> hidden);
 
 // Scratch space reused across evaluations (one per thread).
 struct NetworkWorkspace {
-    Eigen::MatrixXd buffer_a, buffer_b;
+    std::vector<double> scratch;
 };
 
 class Network {
@@ -45,7 +45,8 @@ public:
     // Batched evaluation of `input.cols()` vertices at once: input is
     // inputs() x V, output becomes outputs() x V. Agrees with
     // evaluate_reference() to ~1e-15 relative.
-    // `output` must already have outputs() rows and input.cols() columns.
+    // `output` must already have outputs() rows and input.cols() columns; both
+    // must be contiguous (outer stride = rows), as whole matrices or leftCols are.
     void evaluate(Eigen::Ref<const Eigen::MatrixXd> input, Eigen::Ref<Eigen::MatrixXd> output,
                   NetworkWorkspace& workspace) const;
 
@@ -55,10 +56,10 @@ public:
 private:
     std::vector<int> layers_;
     std::vector<double> params_;
-    // Per layer: weights (out x in, row j = neuron j) and the folded bias
-    // b_j = -threshold_j - 0.5 * sum_k weight_jk, so a = W x + b.
-    std::vector<Eigen::MatrixXd> weights_;
-    std::vector<Eigen::VectorXd> biases_;
+    // Per layer: weights (out x in, row-major: row j = neuron j) and the
+    // folded bias b_j = -threshold_j - 0.5 * sum_k weight_jk, so a = W x + b.
+    std::vector<std::vector<double>> weights_;
+    std::vector<std::vector<double>> biases_;
 };
 
 }  // namespace morphogen
