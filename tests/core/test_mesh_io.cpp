@@ -1,0 +1,417 @@
+// Mesh files: exact round trips (OBJ, PLY, OFF), STL/GLB structure, and a
+// clear IoError naming the file for every malformed input.
+#include "errors.hpp"
+#include "mesh_io.hpp"
+
+#include <catch2/catch.hpp>
+#include <tiny_gltf.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include <unistd.h>
+
+using namespace morphogen;
+namespace fs = std::filesystem;
+
+namespace {
+
+// A fresh directory per test case, removed afterwards.
+struct TempDir {
+    fs::path dir;
+    TempDir() {
+        static int counter = 0;
+        dir = fs::temp_directory_path() /
+              ("morphogen_test_mesh_io_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
+        fs::create_directories(dir);
+    }
+    ~TempDir() {
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+    }
+    std::string file(const std::string& name) const { return (dir / name).string(); }
+    std::string write(const std::string& name, const std::string& bytes) const {
+        const std::string path = file(name);
+        std::ofstream(path, std::ios::binary) << bytes;
+        return path;
+    }
+};
+
+// Unit cube with outward faces, corners at awkward (non-short) coordinates so
+// that exactness is really tested.
+MeshArrays awkward_cube() {
+    MeshArrays m;
+    std::mt19937_64 rng(42);
+    std::uniform_real_distribution<double> jitter(-1e-3, 1e-3);
+    for (int i = 0; i < 8; ++i)
+        m.positions.emplace_back((i & 1 ? 1.0 : 0.0) + jitter(rng) / 3.0, (i & 2 ? 1.0 : 0.0) + 1e-17 * i,
+                                 (i & 4 ? 1.0 : 0.0) + std::nextafter(0.1, 1.0) * 1e-6 * i);
+    m.positions[3].x() = -1.2345678901234567e-300;  // tiny, subnormal-adjacent magnitudes too
+    m.positions[5].y() = 6.0221408570000002e+23;
+    m.faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
+               {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
+    return m;
+}
+
+void require_identical(const MeshArrays& a, const MeshArrays& b) {
+    REQUIRE(a.positions.size() == b.positions.size());
+    REQUIRE(a.faces == b.faces);
+    for (std::size_t i = 0; i < a.positions.size(); ++i)
+        for (int k = 0; k < 3; ++k) {
+            INFO("vertex " << i << " coordinate " << k);
+            REQUIRE(std::memcmp(&a.positions[i][k], &b.positions[i][k], sizeof(double)) == 0);
+        }
+}
+
+std::string slurp(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+template <class T>
+T load_le(const std::string& bytes, std::size_t offset) {
+    T v;
+    std::memcpy(&v, bytes.data() + offset, sizeof(T));
+    return v;  // test hosts are little-endian
+}
+
+// Reading `path` must throw IoError whose message names the file and contains `what`.
+void require_read_error(const std::string& path, const std::string& what) {
+    try {
+        read_mesh(path);
+        FAIL("no IoError for " << path);
+    } catch (const IoError& e) {
+        const std::string msg = e.what();
+        INFO(msg);
+        CHECK(msg.find(path) != std::string::npos);
+        CHECK(msg.find(what) != std::string::npos);
+    }
+}
+
+}  // namespace
+
+TEST_CASE("mesh format is chosen by extension, case-insensitively", "[mesh_io]") {
+    CHECK(mesh_format_from_path("a/b.OBJ") == MeshFormat::obj);
+    CHECK(mesh_format_from_path("x.ply") == MeshFormat::ply);
+    CHECK(mesh_format_from_path("x.Off") == MeshFormat::off);
+    CHECK(mesh_format_from_path("x.stl") == MeshFormat::stl);
+    CHECK(mesh_format_from_path("x.glb") == MeshFormat::glb);
+    CHECK_THROWS_AS(mesh_format_from_path("x.txt"), IoError);
+    CHECK_THROWS_WITH(mesh_format_from_path("noext"), Catch::Contains("noext"));
+}
+
+TEST_CASE("OBJ, PLY and OFF round trips are bit-exact and keep order", "[mesh_io]") {
+    TempDir tmp;
+    const MeshArrays cube = awkward_cube();
+    for (const char* name : {"m.obj", "m.ply", "m.off"}) {
+        SECTION(name) {
+            const std::string path = tmp.file(name);
+            write_mesh(cube.view(), path);
+            require_identical(cube, read_mesh(path));
+            // Writing what was read gives the same bytes.
+            const std::string again = tmp.file(std::string("again_") + name);
+            write_mesh(read_mesh(path).view(), again);
+            CHECK(slurp(path) == slurp(again));
+        }
+    }
+}
+
+TEST_CASE("OBJ starts with a header comment and writes 17 significant digits", "[mesh_io]") {
+    TempDir tmp;
+    MeshArrays m;
+    m.positions = {{0.1, 1.0, -2.5}, {1.0 / 3.0, 0, 1e-20}, {0, 1, 0}};
+    m.faces = {{0, 1, 2}};
+    const std::string path = tmp.file("m.obj");
+    write_mesh(m.view(), path);
+    const std::string text = slurp(path);
+    CHECK(text.rfind("# ", 0) == 0);
+    CHECK(text.find("v 0.10000000000000001 1 -2.5\n") != std::string::npos);
+    CHECK(text.find("v 0.33333333333333331 0 9.9999999999999995e-21\n") != std::string::npos);
+    CHECK(text.find("\nf 1 2 3\n") != std::string::npos);
+}
+
+TEST_CASE("PLY is binary little-endian with double vertices", "[mesh_io]") {
+    TempDir tmp;
+    const MeshArrays cube = awkward_cube();
+    const std::string path = tmp.file("m.ply");
+    write_mesh(cube.view(), path);
+    const std::string bytes = slurp(path);
+    const std::string end = "end_header\n";
+    const auto body = bytes.find(end) + end.size();
+    CHECK(bytes.rfind("ply\nformat binary_little_endian 1.0\n", 0) == 0);
+    CHECK(bytes.size() == body + 8 * 24 + 12 * 13);
+    CHECK(load_le<double>(bytes, body) == cube.positions[0].x());
+}
+
+TEST_CASE("STL is binary with one 50-byte record and a unit normal per face", "[mesh_io]") {
+    TempDir tmp;
+    const MeshArrays cube = awkward_cube();
+    const std::string path = tmp.file("m.stl");
+    write_mesh(cube.view(), path);
+    const std::string bytes = slurp(path);
+    REQUIRE(bytes.size() == 84 + 50 * cube.faces.size());
+    CHECK(bytes.substr(0, 5) != "solid");  // an ASCII-STL sniffing reader must not be fooled
+    CHECK(load_le<std::uint32_t>(bytes, 80) == cube.faces.size());
+    for (std::size_t f = 0; f < cube.faces.size(); ++f) {
+        const std::size_t rec = 84 + 50 * f;
+        const float nx = load_le<float>(bytes, rec), ny = load_le<float>(bytes, rec + 4),
+                    nz = load_le<float>(bytes, rec + 8);
+        CHECK(std::sqrt(nx * nx + ny * ny + nz * nz) == Approx(1.0f).epsilon(1e-5));
+        CHECK(load_le<float>(bytes, rec + 12) == static_cast<float>(cube.positions[cube.faces[f][0]].x()));
+    }
+    // Face 2 = (4,5,6) is the top z=1 face: normal +z.
+    CHECK(load_le<float>(bytes, 84 + 100 + 8) == Approx(1.0f).margin(1e-2));
+}
+
+TEST_CASE("GLB parses back with Y-up positions, normals, indices and a double-sided material", "[mesh_io]") {
+    TempDir tmp;
+    const MeshArrays cube = awkward_cube();
+    const std::string path = tmp.file("m.glb");
+    write_mesh(cube.view(), path);
+    const std::string bytes = slurp(path);
+    REQUIRE(bytes.substr(0, 4) == "glTF");
+    CHECK(load_le<std::uint32_t>(bytes, 4) == 2);
+    CHECK(load_le<std::uint32_t>(bytes, 8) == bytes.size());
+
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    REQUIRE(loader.LoadBinaryFromFile(&model, &err, &warn, path));
+    INFO(err << warn);
+    REQUIRE(model.meshes.size() == 1);
+    REQUIRE(model.materials.size() == 1);
+    CHECK(model.materials[0].doubleSided);
+    const auto& prim = model.meshes[0].primitives.at(0);
+    CHECK(prim.mode == TINYGLTF_MODE_TRIANGLES);
+    CHECK(prim.material == 0);
+    const auto& pos = model.accessors.at(prim.attributes.at("POSITION"));
+    const auto& nrm = model.accessors.at(prim.attributes.at("NORMAL"));
+    const auto& idx = model.accessors.at(prim.indices);
+    CHECK(pos.count == cube.positions.size());
+    CHECK(nrm.count == cube.positions.size());
+    CHECK(idx.count == 3 * cube.faces.size());
+    CHECK(pos.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT);
+    CHECK(idx.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT);
+    REQUIRE(pos.minValues.size() == 3);
+    REQUIRE(pos.maxValues.size() == 3);
+
+    const auto& view = model.bufferViews.at(pos.bufferView);
+    const auto* data = model.buffers.at(view.buffer).data.data() + view.byteOffset + pos.byteOffset;
+    for (std::size_t i = 0; i < cube.positions.size(); ++i) {
+        float q[3];
+        std::memcpy(q, data + 12 * i, 12);
+        const Vec3& p = cube.positions[i];
+        // (x, y, z) Z-up -> (x, z, -y) Y-up
+        CHECK(q[0] == static_cast<float>(p.x()));
+        CHECK(q[1] == static_cast<float>(p.z()));
+        CHECK(q[2] == static_cast<float>(-p.y()));
+        for (int k = 0; k < 3; ++k) {
+            CHECK(q[k] >= pos.minValues[k]);
+            CHECK(q[k] <= pos.maxValues[k]);
+        }
+    }
+    const auto& iview = model.bufferViews.at(idx.bufferView);
+    std::uint32_t first[3];
+    std::memcpy(first, model.buffers.at(iview.buffer).data.data() + iview.byteOffset + idx.byteOffset, 12);
+    CHECK(first[0] == 0);
+    CHECK(first[1] == 2);
+    CHECK(first[2] == 1);
+}
+
+TEST_CASE("an empty mesh still writes valid files", "[mesh_io]") {
+    TempDir tmp;
+    const MeshArrays empty;
+    for (const char* name : {"e.obj", "e.ply", "e.off", "e.stl", "e.glb"}) {
+        INFO(name);
+        CHECK_NOTHROW(write_mesh(empty.view(), tmp.file(name)));
+    }
+    CHECK(read_mesh(tmp.file("e.obj")).positions.empty());
+    CHECK(read_mesh(tmp.file("e.ply")).faces.empty());
+    CHECK(read_mesh(tmp.file("e.off")).faces.empty());
+    tinygltf::Model model;
+    tinygltf::TinyGLTF loader;
+    std::string err, warn;
+    CHECK(loader.LoadBinaryFromFile(&model, &err, &warn, tmp.file("e.glb")));
+}
+
+TEST_CASE("writing fails with IoError naming the path and leaves no file", "[mesh_io]") {
+    TempDir tmp;
+    const MeshArrays cube = awkward_cube();
+    const std::string path = tmp.file("no/such/dir/m.obj");
+    CHECK_THROWS_WITH(write_mesh(cube.view(), path), Catch::Contains(path));
+    MeshArrays bad = cube;
+    bad.faces[3][1] = 8;
+    const std::string bad_path = tmp.file("bad.obj");
+    CHECK_THROWS_AS(write_mesh(bad.view(), bad_path), IoError);
+    CHECK_FALSE(fs::exists(bad_path));
+#ifdef __linux__
+    // A full disk: the stream fails on close; the error must surface. Only as a
+    // non-root user, who could never delete the device if the code regressed.
+    if (::geteuid() != 0 && fs::exists("/dev/full")) {
+        MeshArrays big = cube;
+        big.positions.resize(100000, Vec3(0.1, 0.2, 0.3));
+        CHECK_THROWS_WITH(write_mesh(big.view(), "/dev/full", MeshFormat::obj), Catch::Contains("/dev/full"));
+        CHECK(fs::exists("/dev/full"));
+    }
+#endif
+}
+
+TEST_CASE("OBJ reader: v/vt/vn forms, negative indices, polygons, other lines ignored", "[mesh_io]") {
+    TempDir tmp;
+    const std::string path = tmp.write("q.obj",
+                                       "# comment\r\n"
+                                       "mtllib x.mtl\n"
+                                       "o thing\n"
+                                       "v 0 0 0\n"
+                                       "v 1 0 0 1.0\n"  // optional w
+                                       "v 1 1 0\n"
+                                       "v 0 1 +0.5e0\n"
+                                       "vt 0 0\nvn 0 0 1\n"
+                                       "s off\nusemtl green\n"
+                                       "f 1/1/1 2/1/1 3/1/1 4/1/1\n"  // quad -> 2 triangles
+                                       "f -4//1 -2//1 -1//1  \n"
+                                       "f 1/1 3/1 4/1 # trailing comment\n"
+                                       "l 1 2\n");
+    const MeshArrays m = read_mesh(path);
+    REQUIRE(m.positions.size() == 4);
+    CHECK(m.positions[3].z() == 0.5);
+    REQUIRE(m.faces.size() == 4);
+    CHECK(m.faces[0] == Face{0, 1, 2});
+    CHECK(m.faces[1] == Face{0, 2, 3});
+    CHECK(m.faces[2] == Face{0, 2, 3});
+    CHECK(m.faces[3] == Face{0, 2, 3});
+}
+
+TEST_CASE("OFF reader: comments, counts on the header line, polygons, colours", "[mesh_io]") {
+    TempDir tmp;
+    const std::string path = tmp.write("q.off",
+                                       "# leading comment\n"
+                                       "OFF 4 2 0\n"
+                                       "\n"
+                                       "0 0 0   # a vertex\n"
+                                       "1 0 0\n1 1 0\n0 1 0\n"
+                                       "4 0 1 2 3 255 0 0\n"
+                                       "3 3 2 1\n");
+    const MeshArrays m = read_mesh(path);
+    REQUIRE(m.positions.size() == 4);
+    REQUIRE(m.faces.size() == 3);
+    CHECK(m.faces[1] == Face{0, 2, 3});
+    CHECK(m.faces[2] == Face{3, 2, 1});
+}
+
+namespace {
+
+std::string be_bytes(const void* p, std::size_t n) {
+    std::string s(static_cast<const char*>(p), n);
+    return std::string(s.rbegin(), s.rend());
+}
+
+}  // namespace
+
+TEST_CASE("PLY reader: ascii, big-endian, any numeric types, extra properties and elements", "[mesh_io]") {
+    TempDir tmp;
+    SECTION("ascii with extra properties and a polygon") {
+        const std::string path = tmp.write("a.ply",
+                                           "ply\r\nformat ascii 1.0\r\ncomment hi\r\n"
+                                           "element vertex 4\r\nproperty float y\r\nproperty uchar red\r\n"
+                                           "property float x\r\nproperty double z\r\n"
+                                           "element face 1\r\nproperty uchar flags\r\n"
+                                           "property list uchar ushort vertex_indices\r\n"
+                                           "element edge 1\r\nproperty int vertex1\r\nproperty int vertex2\r\n"
+                                           "end_header\r\n"
+                                           "0 255 0 0\r\n0 1 1 0\r\n1 2 1 0\r\n1 3 0 0.25\r\n"
+                                           "7 4 0 1 2 3\r\n0 1\r\n");
+        const MeshArrays m = read_mesh(path);
+        REQUIRE(m.positions.size() == 4);
+        CHECK(m.positions[3] == Vec3(0, 1, 0.25));
+        REQUIRE(m.faces.size() == 2);
+        CHECK(m.faces[1] == Face{0, 2, 3});
+    }
+    SECTION("binary big-endian with float vertices and an int16 list count") {
+        std::string header =
+            "ply\nformat binary_big_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+            "property float z\nproperty list uchar int extra\nelement face 1\n"
+            "property list short uint vertex_indices\nend_header\n";
+        std::string body;
+        const float coords[3][3] = {{0, 0, 0}, {1.5f, 0, 0}, {0, 2.25f, -1}};
+        for (const auto& v : coords) {
+            for (float c : v) body += be_bytes(&c, 4);
+            body += '\x01';  // one-item "extra" list
+            const std::int32_t e = 99;
+            body += be_bytes(&e, 4);
+        }
+        const std::int16_t n = 3;
+        body += be_bytes(&n, 2);
+        for (std::uint32_t i : {2u, 1u, 0u}) body += be_bytes(&i, 4);
+        const MeshArrays m = read_mesh(tmp.write("b.ply", header + body));
+        REQUIRE(m.positions.size() == 3);
+        CHECK(m.positions[2] == Vec3(0, 2.25, -1));
+        REQUIRE(m.faces.size() == 1);
+        CHECK(m.faces[0] == Face{2, 1, 0});
+    }
+}
+
+TEST_CASE("every malformed file gives an IoError naming the file and the problem", "[mesh_io]") {
+    TempDir tmp;
+    const std::string ply_head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\n"
+                                 "end_header\n";
+    const std::string bin_head =
+        "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty double x\nproperty double y\n"
+        "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+
+    require_read_error(tmp.file("missing.obj"), "cannot open");
+    require_read_error(tmp.dir.string() + "/.obj", "");
+    fs::create_directories(tmp.file("dir.obj"));
+    require_read_error(tmp.file("dir.obj"), "directory");
+    require_read_error(tmp.write("x.stl", ""), "not supported");
+
+    // OBJ
+    require_read_error(tmp.write("num.obj", "v 0 0 0\nv 1 x 0\n"), ":2: bad number 'x'");
+    require_read_error(tmp.write("short.obj", "v 0 0\n"), ":1: vertex needs 3 coordinates");
+    require_read_error(tmp.write("inf.obj", "v 0 0 inf\n"), "not finite");
+    require_read_error(tmp.write("range.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\n"), ":4: vertex index 4 out of range");
+    require_read_error(tmp.write("zero.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n"), "vertex index 0 out of range");
+    require_read_error(tmp.write("neg.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n"), "out of range");
+    require_read_error(tmp.write("two.obj", "v 0 0 0\nv 1 0 0\nf 1 2\n"), ":3: face with 2 corners");
+    require_read_error(tmp.write("badidx.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3x\n"), "bad vertex index '3x'");
+
+    // OFF
+    require_read_error(tmp.write("empty.off", ""), "empty file");
+    require_read_error(tmp.write("magic.off", "PLY\n3 1 0\n"), ":1: not an OFF file");
+    require_read_error(tmp.write("counts.off", "OFF\n3 x 0\n"), ":2: bad face count 'x'");
+    require_read_error(tmp.write("trv.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"), "truncated: found 2 of 3 vertices");
+    require_read_error(tmp.write("trf.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n"), "truncated: found 0 of 1 faces");
+    require_read_error(tmp.write("num.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 one 0\n3 0 1 2\n"), ":5: bad number 'one'");
+    require_read_error(tmp.write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"), ":6: vertex index 3 out of range");
+    require_read_error(tmp.write("two.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n"), ":6: face with 2 corners");
+    require_read_error(tmp.write("few.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"), "face lists 2 of its 3 corners");
+
+    // PLY
+    require_read_error(tmp.write("magic.ply", "solid\n"), "not a PLY file");
+    require_read_error(tmp.write("nohdr.ply", "ply\nformat ascii 1.0\nelement vertex 3\n"), "no end_header");
+    require_read_error(tmp.write("fmt.ply", "ply\nformat binary_middle_endian 1.0\nend_header\n"), ":2: unknown PLY format");
+    require_read_error(tmp.write("type.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty quad x\nend_header\n"),
+                       ":4: unknown property type 'quad'");
+    require_read_error(tmp.write("noz.ply", "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\n"
+                                            "property float y\nend_header\n0 0\n"),
+                       "no scalar property 'z'");
+    require_read_error(tmp.write("num.ply", ply_head + "0 0 0\n1 0 0\n0 1 zz\n3 0 1 2\n"), ":12: bad number 'zz'");
+    require_read_error(tmp.write("tra.ply", ply_head + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n"), "truncated");
+    require_read_error(tmp.write("range.ply", ply_head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n"), "vertex index 5 out of range");
+    require_read_error(tmp.write("two.ply", ply_head + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n"), "face 0 has 2 corners");
+    require_read_error(tmp.write("trb.ply", bin_head + std::string(3 * 24, '\0') + "\x03" + std::string(5, '\0')), "truncated binary data in face 0");
+    require_read_error(tmp.write("trv.ply", bin_head + std::string(30, '\0')), "truncated binary data in vertex 1");
+    require_read_error(tmp.write("fidx.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n"
+                                             "property float y\nproperty float z\nelement face 0\n"
+                                             "property list uchar float vertex_indices\nend_header\n"),
+                       "integer item type");
+}
