@@ -1,0 +1,104 @@
+// `morphogen score`: the configured fitness and every metric of one mesh, read
+// from a file or grown from a genome.
+#include "commands.hpp"
+#include "config_reader.hpp"
+#include "experiment_config.hpp"
+#include "fitness.hpp"
+#include "genome_source.hpp"
+#include "growth.hpp"
+#include "mesh_io.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace morphogen {
+
+namespace {
+
+struct ScoreOptions {
+    std::string mesh;
+    std::string genome;
+    std::string config;
+    std::string fitness;  // inline JSON replacing the config's fitness section
+    bool json = false;
+};
+
+ExperimentConfig score_config(const ScoreOptions& options) {
+    if (options.fitness.empty()) return load_experiment_config(options.config);
+    nlohmann::json document = options.config.empty() ? nlohmann::json::object() : load_json_file(options.config);
+    document["fitness"] = parse_json_text(options.fitness, "--fitness");
+    const std::string source = options.config.empty() ? "--fitness" : options.config + " with --fitness";
+    return read_experiment_config(document, source);
+}
+
+MeshArrays grow_genome(const ExperimentConfig& config, const std::string& path) {
+    const Network network(load_genome_for(config.network.layers(), path));
+    const Seed seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
+    GrowthWorkspace workspace;
+    const GrowthState state = Grower(network, config.growth).grow(seed, workspace);
+    return {state.mesh.positions(), state.mesh.faces()};
+}
+
+std::string number_text(const nlohmann::json& value) {
+    if (value.is_boolean()) return value.get<bool>() ? "yes" : "no";
+    if (value.is_number_integer() || value.is_number_unsigned()) return value.dump();
+    char text[64];
+    std::snprintf(text, sizeof text, "%.10g", value.get<double>());
+    return text;
+}
+
+int run_score(const ScoreOptions& options) {
+    const ExperimentConfig config = score_config(options);
+    const MeshArrays mesh = options.mesh.empty() ? grow_genome(config, options.genome) : read_mesh(options.mesh);
+    const FitnessOutcome outcome = config.fitness->evaluate(mesh.view());
+    const nlohmann::json& fitness_section = config.resolved["fitness"];
+    const nlohmann::json metrics = mesh_metrics(mesh.view(), canopy_params_of(fitness_section));
+    const std::string type = config.fitness->function().type();
+
+    if (options.json) {
+        nlohmann::json report = {{"source", options.mesh.empty() ? options.genome : options.mesh},
+                                 {"fitness_type", type},
+                                 {"fitness_valid", outcome.valid}};
+        report["fitness"] = outcome.valid ? nlohmann::json(outcome.score) : nlohmann::json();  // null if invalid
+        if (!outcome.valid) report["fitness_error"] = outcome.error;
+        report.update(metrics);
+        std::printf("%s\n", report.dump(2).c_str());
+        return 0;
+    }
+    std::printf("%s\n", (options.mesh.empty() ? "genome " + options.genome + " (grown)" : "mesh " + options.mesh).c_str());
+    if (outcome.valid)
+        std::printf("  %-18s %s (%s)\n", "fitness", number_text(outcome.score).c_str(), type.c_str());
+    else
+        std::printf("  %-18s invalid (%s): %s\n", "fitness", type.c_str(), outcome.error.c_str());
+    for (const char* key : {"canopy", "height", "footprint", "area", "volume", "vertices", "faces", "self_intersecting"})
+        std::printf("  %-18s %s\n", key, number_text(metrics.at(key)).c_str());
+    return 0;
+}
+
+}  // namespace
+
+void add_score_command(CLI::App& root, CommandRunner& selected) {
+    auto options = std::make_shared<ScoreOptions>();
+    CLI::App* cmd = root.add_subcommand("score", "Print the configured fitness and every metric of a mesh");
+    auto* mesh = cmd->add_option("--mesh", options->mesh, "Score this mesh file (.obj .off .ply)")
+                     ->check(CLI::ExistingFile);
+    auto* genome = cmd->add_option("--genome", options->genome, "Grow this genome (JSON) and score the mesh")
+                       ->check(CLI::ExistingFile);
+    mesh->excludes(genome);
+    cmd->add_option("--config", options->config,
+                    "Experiment config (JSON): its network/growth grow --genome, its fitness scores")
+        ->check(CLI::ExistingFile);
+    cmd->add_option("--fitness", options->fitness,
+                    "Fitness section as inline JSON, replacing the config's, e.g. '{\"type\": \"light\"}'");
+    cmd->add_flag("--json", options->json, "Print one JSON object instead of text");
+    cmd->callback([options, mesh, genome, &selected] {
+        if (mesh->count() + genome->count() != 1)
+            throw CLI::RequiredError("score needs one of --mesh FILE or --genome FILE");
+        selected = [options] { return run_score(*options); };
+    });
+}
+
+}  // namespace morphogen

@@ -1,0 +1,34 @@
+#pragma once
+// Light captured from the sky. For each sun, parallel rays travel along
+// -to_sun through a square lattice of spacing `spacing` on the plane
+// perpendicular to them (ray k, l passes through (k+0.5)*spacing,
+// (l+0.5)*spacing in that plane's basis), covering the mesh's projected
+// bounding box. A ray scores its cross-section spacing^2 if its first hit on
+// the mesh (CGAL AABB tree) has z >= min_height: the mesh shades itself. The
+// score is the mean over suns, an area comparable with the canopy's: a flat
+// horizontal square under a vertical sun captures its own area.
+#include "mesh.hpp"
+
+#include <vector>
+
+namespace morphogen {
+
+struct LightParams {
+    // Sun directions: every elevation (degrees above the horizon, (0, 90])
+    // with every azimuth (degrees from +x towards +y); elevation 90 counts once.
+    std::vector<double> elevations_deg{90.0, 45.0};
+    std::vector<double> azimuths_deg{0.0, 90.0, 180.0, 270.0};
+    double spacing = 0.1;     // distance between neighbouring rays, > 0
+    double min_height = 0.0;  // hits below this z capture nothing
+};
+
+// Unit vectors pointing towards each sun, in the order elevation-major.
+std::vector<Vec3> sun_directions(const LightParams& params);
+
+// Light from one sun; throws std::length_error beyond 2^26 rays.
+double light_from(MeshView mesh, const Vec3& to_sun, double spacing, double min_height);
+
+// Mean of light_from over sun_directions(params). Thread-safe.
+double light_captured(MeshView mesh, const LightParams& params);
+
+}  // namespace morphogen

@@ -1,0 +1,193 @@
+// The registry of fitness functions by name: each entry reads and checks its
+// own keys (ObjectReader, so every issue names its key path) and builds the
+// function. A new function is one class and one row of kTypes.
+#include "fitness.hpp"
+
+#include "canopy.hpp"
+#include "cgal_geometry.hpp"
+#include "light.hpp"
+#include "measures.hpp"
+
+#include <utility>
+
+namespace morphogen {
+
+using nlohmann::json;
+
+namespace {
+
+constexpr double kBig = 1e12;  // bounds of "any" number, readable in messages
+
+class CanopyFunction final : public FitnessFunction {
+public:
+    explicit CanopyFunction(CanopyParams params) : params_(params) {}
+    std::string type() const override { return "canopy"; }
+    double evaluate(MeshView mesh) const override { return canopy_area(mesh, params_); }
+
+private:
+    CanopyParams params_;
+};
+
+class LightFunction final : public FitnessFunction {
+public:
+    explicit LightFunction(LightParams params) : params_(std::move(params)) {}
+    std::string type() const override { return "light"; }
+    double evaluate(MeshView mesh) const override { return light_captured(mesh, params_); }
+
+private:
+    LightParams params_;
+};
+
+// A measure without keys (height, area, ...).
+class MeasureFunction final : public FitnessFunction {
+public:
+    using Measure = double (*)(MeshView);
+    MeasureFunction(std::string name, Measure measure) : name_(std::move(name)), measure_(measure) {}
+    std::string type() const override { return name_; }
+    double evaluate(MeshView mesh) const override { return measure_(mesh); }
+
+private:
+    std::string name_;
+    Measure measure_;
+};
+
+class SumFunction final : public FitnessFunction {
+public:
+    using Term = std::pair<double, std::unique_ptr<FitnessFunction>>;  // weight, function
+    explicit SumFunction(std::vector<Term> terms) : terms_(std::move(terms)) {}
+    std::string type() const override { return "sum"; }
+    double evaluate(MeshView mesh) const override {
+        double sum = 0.0;
+        for (const auto& [weight, function] : terms_) sum += weight * function->evaluate(mesh);
+        return sum;
+    }
+    bool thread_safe() const override {
+        for (const auto& term : terms_)
+            if (!term.second->thread_safe()) return false;
+        return true;
+    }
+
+private:
+    std::vector<Term> terms_;
+};
+
+std::unique_ptr<FitnessFunction> read_canopy(ObjectReader& reader) {
+    CanopyParams params;
+    params.height = reader.number("height", params.height, -kBig, kBig);
+    params.cell = reader.number("cell", params.cell, 0.0, kBig, /*min_exclusive=*/true);
+    return std::make_unique<CanopyFunction>(params);
+}
+
+std::unique_ptr<FitnessFunction> read_light(ObjectReader& reader) {
+    LightParams params;
+    params.elevations_deg = reader.number_list("elevations_deg", params.elevations_deg, 0.0, 90.0);
+    params.azimuths_deg = reader.number_list("azimuths_deg", params.azimuths_deg, -360.0, 360.0);
+    params.spacing = reader.number("spacing", params.spacing, 0.0, kBig, /*min_exclusive=*/true);
+    params.min_height = reader.number("min_height", params.min_height, -kBig, kBig);
+    const std::string elevations = reader.path_of("elevations_deg");
+    if (params.elevations_deg.empty()) reader.issues().add(elevations, "needs at least one sun elevation");
+    for (std::size_t i = 0; i < params.elevations_deg.size(); ++i)
+        if (params.elevations_deg[i] == 0.0)
+            reader.issues().add(elevations + "[" + std::to_string(i) + "]", "0 is out of range (0, 90]");
+    bool needs_azimuth = false;
+    for (double e : params.elevations_deg) needs_azimuth |= e != 90.0;
+    if (needs_azimuth && params.azimuths_deg.empty())
+        reader.issues().add(reader.path_of("azimuths_deg"), "needs at least one azimuth for elevations below 90");
+    return std::make_unique<LightFunction>(std::move(params));
+}
+
+double vertex_count(MeshView mesh) { return static_cast<double>(mesh.positions.size()); }
+double face_count(MeshView mesh) { return static_cast<double>(mesh.faces.size()); }
+double self_intersecting(MeshView mesh) { return mesh_self_intersects(mesh) ? 1.0 : 0.0; }
+
+std::unique_ptr<FitnessFunction> read_sum(ObjectReader& reader);
+
+// A type is read either by `read` (its own keys) or, for a measure without
+// keys, built from `measure`.
+struct TypeEntry {
+    const char* name;
+    std::unique_ptr<FitnessFunction> (*read)(ObjectReader&);
+    MeasureFunction::Measure measure;
+};
+
+const TypeEntry kTypes[] = {
+    {"canopy", read_canopy, nullptr},
+    {"light", read_light, nullptr},
+    {"sum", read_sum, nullptr},
+    {"height", nullptr, mesh_height},
+    {"footprint", nullptr, mesh_footprint},
+    {"area", nullptr, mesh_area},
+    {"volume", nullptr, mesh_volume},
+    {"vertices", nullptr, vertex_count},
+    {"faces", nullptr, face_count},
+    {"self_intersecting", nullptr, self_intersecting},
+};
+
+struct ReadResult {
+    std::unique_ptr<FitnessFunction> function;  // null if there were issues
+    bool type_known = false;                     // false: the other keys were not checked
+};
+
+ReadResult read_typed(ObjectReader& reader) {
+    ConfigIssues& issues = reader.issues();
+    const std::size_t before = issues.list().size();
+    const std::string type = reader.choice("type", "canopy", fitness_type_names());
+    ReadResult result;
+    if (issues.list().size() != before) return result;
+    result.type_known = true;
+    for (const TypeEntry& entry : kTypes) {
+        if (type == entry.name) {
+            result.function = entry.read ? entry.read(reader) : std::make_unique<MeasureFunction>(type, entry.measure);
+            break;
+        }
+    }
+    if (issues.list().size() != before) result.function.reset();
+    return result;
+}
+
+std::unique_ptr<FitnessFunction> read_sum(ObjectReader& reader) {
+    ConfigIssues& issues = reader.issues();
+    const std::size_t before = issues.list().size();
+    const std::string path = reader.path_of("terms");
+    const json* terms = reader.raw("terms");
+    json resolved_terms = json::array();
+    std::vector<SumFunction::Term> built;
+    if (terms == nullptr) {
+        issues.add(path, "a sum needs \"terms\": a non-empty list of fitness objects");
+    } else if (!terms->is_array() || terms->empty()) {
+        issues.add(path, "expected a non-empty list of fitness objects, got " + terms->dump());
+    } else {
+        for (std::size_t i = 0; i < terms->size(); ++i) {
+            ObjectReader term(&(*terms)[i], path + "[" + std::to_string(i) + "]", issues);
+            const double weight = term.number("weight", 1.0, -kBig, kBig);
+            ReadResult read = read_typed(term);
+            if (read.type_known) term.finish();
+            if (read.function) built.emplace_back(weight, std::move(read.function));
+            resolved_terms.push_back(term.resolved());
+        }
+    }
+    reader.set_resolved("terms", std::move(resolved_terms));
+    if (issues.list().size() != before) return nullptr;
+    return std::make_unique<SumFunction>(std::move(built));
+}
+
+}  // namespace
+
+std::vector<std::string> fitness_type_names() {
+    std::vector<std::string> names;
+    for (const TypeEntry& entry : kTypes) names.emplace_back(entry.name);
+    return names;
+}
+
+std::unique_ptr<FitnessFunction> read_fitness_function(ObjectReader& reader) { return read_typed(reader).function; }
+
+std::unique_ptr<Fitness> read_fitness(ObjectReader& reader) {
+    const std::size_t before = reader.issues().list().size();
+    const bool reject = reader.boolean("reject_self_intersecting", false);
+    ReadResult read = read_typed(reader);
+    if (read.type_known) reader.finish();
+    if (reader.issues().list().size() != before || !read.function) return nullptr;
+    return std::make_unique<Fitness>(std::move(read.function), reject);
+}
+
+}  // namespace morphogen
