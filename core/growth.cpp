@@ -1,6 +1,7 @@
 #include "growth.hpp"
 
 #include "errors.hpp"
+#include "gather_kernel.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -55,7 +56,8 @@ GrowthState Grower::start(const Seed& seed) const {
     GrowthState state;
     state.mesh = seed.mesh;
     state.directions = seed.directions;
-    state.outputs = Eigen::MatrixXd::Constant(network_.outputs(), seed.mesh.num_vertices(), 0.5);
+    state.outputs_per_vertex = network_.outputs();
+    state.outputs.assign(static_cast<std::size_t>(network_.outputs()) * seed.mesh.num_vertices(), 0.5);
     return state;
 }
 
@@ -63,48 +65,39 @@ void Grower::gather(const GrowthState& state, GrowthWorkspace& workspace) const 
     const TriMesh& mesh = state.mesh;
     const int V = mesh.num_vertices();
     const int N = network_.outputs();
-    Eigen::MatrixXd& inputs = workspace.inputs;
-    inputs.resize(3 * N, V);
-    const double* w = state.outputs.data();
+    // Neighbour lists in CSR form, from one pass over the half-edges: each
+    // neighbour of u is the head of exactly one half-edge leaving u.
+    std::vector<int>& offsets = workspace.neighbour_offsets;
     std::vector<int>& neighbours = workspace.neighbours;
-    for (int i = 0; i < V; ++i) {
-        double* in = inputs.data() + static_cast<std::ptrdiff_t>(3 * N) * i;
-        double* mean = in + N;
-        double* deviation = in + 2 * N;
-        std::copy_n(w + static_cast<std::ptrdiff_t>(N) * i, N, in);
-
-        neighbours.clear();
-        mesh.for_each_neighbour(i, [&](int u) { neighbours.push_back(u); });
-        const double inverse_count = 1.0 / static_cast<double>(neighbours.size());
-        std::fill_n(mean, 2 * N, 0.0);
-        for (int u : neighbours) {
-            const double* wu = w + static_cast<std::ptrdiff_t>(N) * u;
-            for (int c = 0; c < N; ++c) mean[c] += wu[c];
-        }
-        for (int c = 0; c < N; ++c) mean[c] *= inverse_count;
-        // Two passes: the population deviation without cancellation.
-        for (int u : neighbours) {
-            const double* wu = w + static_cast<std::ptrdiff_t>(N) * u;
-            for (int c = 0; c < N; ++c) {
-                const double d = wu[c] - mean[c];
-                deviation[c] += d * d;
-            }
-        }
-        for (int c = 0; c < N; ++c) deviation[c] = std::sqrt(deviation[c] * inverse_count);
-
-        const Vec3& h = state.directions[i];
-        in[3 * N - 4] = 0.5 + 0.5 * h.x();
-        in[3 * N - 3] = 0.5 + 0.5 * h.y();
-        in[3 * N - 2] = 0.5 + 0.5 * h.z();
-        in[3 * N - 1] = mesh.position(i).z() / params_.height_scale;
+    offsets.resize(static_cast<std::size_t>(V) + 1);
+    offsets[0] = 0;
+    for (int v = 0; v < V; ++v) offsets[v + 1] = offsets[v] + mesh.valence(v);
+    neighbours.resize(offsets[V]);
+    std::vector<int>& cursor = workspace.cursor;
+    cursor.assign(offsets.begin(), offsets.end() - 1);
+    for (const Face& f : mesh.faces()) {
+        neighbours[cursor[f[0]]++] = f[1];
+        neighbours[cursor[f[1]]++] = f[2];
+        neighbours[cursor[f[2]]++] = f[0];
     }
+    workspace.inputs.resize(static_cast<std::size_t>(3 * N) * V);
+    kernel::GatherInput in;
+    in.outputs = N;
+    in.vertices = V;
+    in.previous = state.outputs.data();
+    in.neighbour_offsets = offsets.data();
+    in.neighbours = neighbours.data();
+    in.directions = state.directions.data();
+    in.positions = mesh.positions().data();
+    in.height_scale = params_.height_scale;
+    kernel::gather_inputs(in, workspace.inputs.data());
 }
 
 void Grower::move(GrowthState& state) const {
     std::vector<Vec3>& x = state.mesh.positions();
     const int V = state.mesh.num_vertices();
     const double* w = state.outputs.data();
-    const Eigen::Index N = state.outputs.rows();
+    const std::ptrdiff_t N = state.outputs_per_vertex;
     double total = 0.0;
     for (int i = 0; i < V; ++i) total += std::max(0.0, w[N * i] - 0.5);
     if (total > 0.0) {
@@ -117,17 +110,15 @@ void Grower::move(GrowthState& state) const {
 
 void Grower::split(GrowthState& state) const {
     TriMesh& mesh = state.mesh;
-    const int N = static_cast<int>(state.outputs.rows());
+    const int N = state.outputs_per_vertex;
     const int F0 = mesh.num_faces();
-    const int V0 = mesh.num_vertices();
-    const double* w = state.outputs.data();
-    std::vector<double> new_outputs;  // columns of the vertices added in this phase
+    std::vector<double>& outputs = state.outputs;
     for (int f = 0; f < F0; ++f) {
         if (mesh.num_vertices() >= params_.max_vertices) break;
         const auto [a, b, c] = mesh.face(f);
-        const double* wa = w + static_cast<std::ptrdiff_t>(N) * a;
-        const double* wb = w + static_cast<std::ptrdiff_t>(N) * b;
-        const double* wc = w + static_cast<std::ptrdiff_t>(N) * c;
+        const double* wa = outputs.data() + static_cast<std::ptrdiff_t>(N) * a;
+        const double* wb = outputs.data() + static_cast<std::ptrdiff_t>(N) * b;
+        const double* wc = outputs.data() + static_cast<std::ptrdiff_t>(N) * c;
         const Vec3 cross = mesh.face_cross(f);
         const double area = 0.5 * cross.norm();
         if (!(area > params_.split_area * (0.5 + (wa[1] + wb[1] + wc[1]) / 3.0))) continue;
@@ -137,14 +128,17 @@ void Grower::split(GrowthState& state) const {
         const Vec3 sum = normal + wa[2] * h[a] + wb[2] * h[b] + wc[2] * h[c];
         const double length = sum.norm();
         const Vec3 direction = length < 1e-12 ? normal : Vec3(sum / length);
-        for (int k = 0; k < N; ++k) new_outputs.push_back((wa[k] + wb[k] + wc[k]) / 3.0);
+        // a, b, c are older vertices (faces appended in this phase are not
+        // visited), so w_v averages this step's outputs. Grow first: the
+        // pointers above may not survive the reallocation.
+        const std::size_t end = outputs.size();
+        outputs.resize(end + N);
+        for (int k = 0; k < N; ++k)
+            outputs[end + k] = (outputs[static_cast<std::size_t>(N) * a + k] + outputs[static_cast<std::size_t>(N) * b + k] +
+                                outputs[static_cast<std::size_t>(N) * c + k]) /
+                               3.0;
         mesh.split_face(f, mesh.face_centroid(f));
         state.directions.push_back(direction);
-    }
-    const int added = mesh.num_vertices() - V0;
-    if (added > 0) {
-        state.outputs.conservativeResize(Eigen::NoChange, V0 + added);
-        std::copy(new_outputs.begin(), new_outputs.end(), state.outputs.data() + static_cast<std::ptrdiff_t>(N) * V0);
     }
 }
 
@@ -161,7 +155,7 @@ void Grower::step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* ti
     if (times != nullptr) times->vertex_steps += static_cast<std::uint64_t>(state.mesh.num_vertices());
     gather(state, workspace);
     clock.lap(&PhaseTimes::gather);
-    workspace.next_outputs.resize(network_.outputs(), state.mesh.num_vertices());
+    workspace.next_outputs.resize(static_cast<std::size_t>(network_.outputs()) * state.mesh.num_vertices());
     network_.evaluate(workspace.inputs, workspace.next_outputs, workspace.network);
     state.outputs.swap(workspace.next_outputs);
     clock.lap(&PhaseTimes::think);

@@ -18,8 +18,13 @@ namespace morphogen {
 struct GrowthState {
     TriMesh mesh;
     std::vector<Vec3> directions;  // h_i, unit, fixed for the vertex's life
-    Eigen::MatrixXd outputs;       // N x V: w_i per column, in (0,1)
+    std::vector<double> outputs;   // w: N per vertex, vertex after vertex, in (0, 1]
+    int outputs_per_vertex = 0;    // N
     int steps_done = 0;
+
+    double output(int vertex, int channel) const {
+        return outputs[static_cast<std::size_t>(vertex) * outputs_per_vertex + channel];
+    }
 };
 
 // Seconds spent in each phase (accumulated over calls).
@@ -32,9 +37,11 @@ struct PhaseTimes {
 
 // Reusable per-thread buffers, so growing many genomes does not reallocate.
 struct GrowthWorkspace {
-    Eigen::MatrixXd inputs;        // 3N x V
-    Eigen::MatrixXd next_outputs;  // N x V
-    std::vector<int> neighbours;
+    // Plain vectors: they keep their capacity as the mesh grows, so steps do
+    // not reallocate (and page-fault) fresh buffers.
+    std::vector<double> inputs;        // 3N per vertex
+    std::vector<double> next_outputs;  // N per vertex
+    std::vector<int> neighbour_offsets, neighbours, cursor;  // CSR neighbour lists
     NetworkWorkspace network;
 };
 

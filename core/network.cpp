@@ -4,6 +4,7 @@
 #include "network_kernel.hpp"
 
 #include <cmath>
+#include <stdexcept>
 
 namespace morphogen {
 
@@ -68,13 +69,15 @@ Network::Network(const Genome& genome) : layers_(genome.layers), params_(genome.
     }
 }
 
-void Network::evaluate(Eigen::Ref<const Eigen::MatrixXd> input, Eigen::Ref<Eigen::MatrixXd> output,
-                       NetworkWorkspace& workspace) const {
+void Network::evaluate(std::span<const double> input, std::span<double> output, NetworkWorkspace& workspace) const {
+    const auto count = static_cast<std::ptrdiff_t>(input.size() / inputs());
+    if (input.size() != static_cast<std::size_t>(count * inputs()) || output.size() != static_cast<std::size_t>(count * outputs()))
+        throw std::invalid_argument("Network::evaluate: buffer sizes do not match the layers");
     std::vector<kernel::Layer> layers;
     layers.reserve(weights_.size());
     for (std::size_t l = 0; l < weights_.size(); ++l)
         layers.push_back({layers_[l], layers_[l + 1], weights_[l].data(), biases_[l].data()});
-    kernel::evaluate(layers, input.data(), output.data(), input.cols(), workspace.scratch);
+    kernel::evaluate(layers, input.data(), output.data(), count, workspace.scratch);
 }
 
 std::vector<double> Network::evaluate_reference(std::span<const double> input) const {

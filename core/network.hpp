@@ -42,13 +42,11 @@ public:
     int outputs() const { return layers_.back(); }
     const std::vector<int>& layers() const { return layers_; }
 
-    // Batched evaluation of `input.cols()` vertices at once: input is
-    // inputs() x V, output becomes outputs() x V. Agrees with
-    // evaluate_reference() to ~1e-15 relative.
-    // `output` must already have outputs() rows and input.cols() columns; both
-    // must be contiguous (outer stride = rows), as whole matrices or leftCols are.
-    void evaluate(Eigen::Ref<const Eigen::MatrixXd> input, Eigen::Ref<Eigen::MatrixXd> output,
-                  NetworkWorkspace& workspace) const;
+    // Batched evaluation of V vertices at once: `input` holds inputs() numbers
+    // per vertex, vertex after vertex (V = input.size() / inputs()); `output`
+    // must hold outputs() * V and receives each vertex's outputs the same way.
+    // Agrees with evaluate_reference() to ~1e-15 relative.
+    void evaluate(std::span<const double> input, std::span<double> output, NetworkWorkspace& workspace) const;
 
     // The paper's pseudocode for one vertex, literally; the reference for tests.
     std::vector<double> evaluate_reference(std::span<const double> input) const;

@@ -6,6 +6,9 @@
 
 namespace morphogen::kernel {
 
+#ifndef KERNEL_GROUP
+#define KERNEL_GROUP 6
+#endif
 namespace {
 
 // Four doubles: one AVX2 register (two SSE2 registers in the baseline clone).
@@ -14,7 +17,8 @@ using u4 = std::uint64_t __attribute__((vector_size(32)));
 constexpr int lanes = 4;
 static_assert(block % lanes == 0);
 
-[[gnu::always_inline]] inline v4 splat(double x) { return v4{x, x, x, x}; }
+// Broadcasts are written as scalar * vector (never v4{x,x,x,x}): GCC 12 turns
+// the latter, inlined into the AVX2 clone, into two instructions.
 [[gnu::always_inline]] inline v4 load(const double* p) {
     v4 v;
     __builtin_memcpy(&v, p, sizeof v);
@@ -22,71 +26,64 @@ static_assert(block % lanes == 0);
 }
 [[gnu::always_inline]] inline void store(double* p, v4 v) { __builtin_memcpy(p, &v, sizeof v); }
 
-// Cody-Waite reduction x = n ln2 + r, |r| <= ln2/2, then a degree-13 Taylor
-// polynomial (truncation < 2e-17 relative) and 2^n built in the exponent bits.
-// The rounding uses the 1.5*2^52 shifter, whose low mantissa bits then hold n
-// as an integer: no double->int64 conversion, which AVX2 lacks.
+// sigmoid(a) = 1 / (1 + e^x), x = -a, in one division. Cody-Waite reduction
+// x = n ln2 + r (|r| <= ln2/2), e^r = (q + p) / (q - p) with Cephes' Pade
+// coefficients (p = r P(r^2), q = Q(r^2); ~1 ulp), so
+//   sigmoid = (q - p) / ((q - p) + 2^n (q + p)).
+// n is rounded with the 1.5*2^52 shifter, whose low mantissa bits then hold n
+// as an integer (AVX2 has no double->int64 conversion); 2^n is built in the
+// exponent bits. x is clamped to [-700, 700], where 2^n (q + p) stays finite:
+// beyond it the sigmoid differs from the exact one by less than 1e-304.
 template <class T, class Bits>
-[[gnu::always_inline]] inline T exp_generic(T x) {
+[[gnu::always_inline]] inline T sigmoid_generic(T a) {
     constexpr double log2e = 1.4426950408889634074;
     constexpr double ln2_hi = 6.93147180369123816490e-01;
     constexpr double ln2_lo = 1.90821492927058770002e-10;
     constexpr double shifter = 0x1.8p52;
-    x = x < -708.0 ? T{} - 708.0 : x;
-    x = x > 709.0 ? T{} + 709.0 : x;
+    T x = -a;
+    x = x < -700.0 ? T{} - 700.0 : x;
+    x = x > 700.0 ? T{} + 700.0 : x;
     const T t = x * log2e + shifter;
     const T n = t - shifter;
     const T r = (x - n * ln2_hi) - n * ln2_lo;
-    T p = T{} + 1.0 / 6227020800.0;  // 1/13!
-    p = p * r + 1.0 / 479001600.0;
-    p = p * r + 1.0 / 39916800.0;
-    p = p * r + 1.0 / 3628800.0;
-    p = p * r + 1.0 / 362880.0;
-    p = p * r + 1.0 / 40320.0;
-    p = p * r + 1.0 / 5040.0;
-    p = p * r + 1.0 / 720.0;
-    p = p * r + 1.0 / 120.0;
-    p = p * r + 1.0 / 24.0;
-    p = p * r + 1.0 / 6.0;
-    p = p * r + 0.5;
-    p = p * r + 1.0;
-    p = p * r + 1.0;
+    const T rr = r * r;
+    const T p = r * ((1.26177193074810590878e-4 * rr + 3.02994407707441961300e-2) * rr + 9.99999999999999999910e-1);
+    const T q = ((3.00198505138664455042e-6 * rr + 2.52448340349684104192e-3) * rr + 2.27265548208155028766e-1) * rr +
+                2.00000000000000000009e0;
     const Bits scale = (std::bit_cast<Bits>(t) + 1023) << 52;
-    return p * std::bit_cast<T>(scale);
+    const T numerator = q - p;
+    return numerator / (numerator + std::bit_cast<T>(scale) * (q + p));
 }
 
-[[gnu::always_inline]] inline v4 sigmoid(v4 a) { return 1.0 / (1.0 + exp_generic<v4, u4>(-a)); }
+[[gnu::always_inline]] inline v4 sigmoid(v4 a) { return sigmoid_generic<v4, u4>(a); }
 
 // out[j][v] = sigmoid(bias_j + sum_k W[j][k] * in[k][v]) for one block; in and
 // out are feature-major (`block` values per feature). Four neurons at a time
 // keep 4 x 8 accumulators (8 registers) live while streaming the inputs once.
 [[gnu::always_inline]] inline void dense_sigmoid(const Layer& layer, const double* in, double* out) {
-    constexpr int B = block, R = block / lanes;
+    constexpr int B = block, R = block / lanes, G = KERNEL_GROUP;
     const int I = layer.inputs, O = layer.outputs;
     int j = 0;
-    for (; j + 4 <= O; j += 4) {
-        v4 acc[4][R];
-        for (int jj = 0; jj < 4; ++jj)
-            for (int r = 0; r < R; ++r) acc[jj][r] = splat(layer.bias[j + jj]);
+    for (; j + G <= O; j += G) {
+        v4 acc[G][R];
+        for (int jj = 0; jj < G; ++jj)
+            for (int r = 0; r < R; ++r) acc[jj][r] = v4{} + layer.bias[j + jj];
         const double* w = layer.weights + static_cast<std::ptrdiff_t>(j) * I;
         for (int k = 0; k < I; ++k) {
             v4 x[R];
             for (int r = 0; r < R; ++r) x[r] = load(in + k * B + r * lanes);
-            for (int jj = 0; jj < 4; ++jj) {
-                const v4 wk = splat(w[jj * I + k]);
-                for (int r = 0; r < R; ++r) acc[jj][r] += wk * x[r];
-            }
+            for (int jj = 0; jj < G; ++jj)
+                for (int r = 0; r < R; ++r) acc[jj][r] += w[jj * I + k] * x[r];
         }
-        for (int jj = 0; jj < 4; ++jj)
+        for (int jj = 0; jj < G; ++jj)
             for (int r = 0; r < R; ++r) store(out + (j + jj) * B + r * lanes, sigmoid(acc[jj][r]));
     }
     for (; j < O; ++j) {
         v4 acc[R];
-        for (int r = 0; r < R; ++r) acc[r] = splat(layer.bias[j]);
+        for (int r = 0; r < R; ++r) acc[r] = v4{} + layer.bias[j];
         const double* w = layer.weights + static_cast<std::ptrdiff_t>(j) * I;
         for (int k = 0; k < I; ++k) {
-            const v4 wk = splat(w[k]);
-            for (int r = 0; r < R; ++r) acc[r] += wk * load(in + k * B + r * lanes);
+            for (int r = 0; r < R; ++r) acc[r] += w[k] * load(in + k * B + r * lanes);
         }
         for (int r = 0; r < R; ++r) store(out + j * B + r * lanes, sigmoid(acc[r]));
     }
@@ -94,7 +91,7 @@ template <class T, class Bits>
 
 }  // namespace
 
-double exp_vectorizable(double x) { return exp_generic<double, std::uint64_t>(x); }
+double sigmoid_vectorizable(double a) { return sigmoid_generic<double, std::uint64_t>(a); }
 
 [[gnu::target_clones("arch=x86-64-v3", "default")]]
 void evaluate(const std::vector<Layer>& layers, const double* input, double* output, std::ptrdiff_t count,

@@ -28,8 +28,8 @@ struct Layer {
 void evaluate(const std::vector<Layer>& layers, const double* input, double* output, std::ptrdiff_t count,
               std::vector<double>& scratch);
 
-// e^x for x in [-708, 709] to ~2 ulp, written so loops over it vectorise
-// (no libm call); exposed for tests.
-double exp_vectorizable(double x);
+// The kernel's sigmoid 1 / (1 + e^-a) for one value (no libm call, so loops
+// over it vectorise); exposed for tests.
+double sigmoid_vectorizable(double a);
 
 }  // namespace morphogen::kernel

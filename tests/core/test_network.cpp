@@ -34,7 +34,8 @@ TEST_CASE("batched evaluation agrees with the paper's pseudocode to 1e-12", "[ne
             for (Eigen::Index i = 0; i < inputs.size(); ++i) inputs.data()[i] = rng.uniform(-0.5, 1.5);
             Eigen::MatrixXd outputs(layers.back(), V);
             NetworkWorkspace workspace;
-            network.evaluate(inputs, outputs, workspace);
+            network.evaluate({inputs.data(), static_cast<std::size_t>(inputs.size())},
+                             {outputs.data(), static_cast<std::size_t>(outputs.size())}, workspace);
             for (int v = 0; v < V; ++v) {
                 const std::vector<double> column(inputs.col(v).data(), inputs.col(v).data() + layers.front());
                 const std::vector<double> expected = network.evaluate_reference(column);

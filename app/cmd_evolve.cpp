@@ -1,0 +1,67 @@
+// `morphogen evolve CONFIG`: checks the config, makes a new run directory and
+// runs the GA (evolution_run.hpp).
+#include "atomic_file.hpp"
+#include "commands.hpp"
+#include "evolution_run.hpp"
+
+#include <chrono>
+#include <memory>
+
+namespace morphogen {
+
+namespace {
+struct EvolveOptions {
+    std::string config, out;
+    std::uint64_t seed = 0, generations = 0;
+    int threads = 0;
+    bool force = false;
+    CLI::Option *seed_option = nullptr, *generations_option = nullptr, *threads_option = nullptr;
+};
+
+int run_evolve(const EvolveOptions& o) {
+    ConfigOverrides overrides;
+    if (*o.seed_option) overrides.seed = o.seed;
+    if (*o.generations_option) overrides.generations = o.generations;
+    if (*o.threads_option) overrides.threads = o.threads;
+    ExperimentConfig config = load_experiment_config(o.config, overrides);  // every problem, before anything else
+    GrowthProblem problem(config);  // a bad seed mesh file fails here, before the directory exists
+
+    const RunPaths paths =
+        run_paths(o.out.empty() ? default_run_dir(config.run.name, std::chrono::system_clock::now())
+                                : std::filesystem::path(o.out));
+    create_run_dir(paths, o.force);
+    RunLock lock(paths.dir);
+    clear_run_files(paths);
+    write_file_atomically(paths.config, config.resolved.dump(2) + "\n");
+
+    RunSession session{paths,
+                       config,
+                       RunState{},
+                       AppendFile::create(paths.history, history_header),
+                       AppendFile::create(paths.lineage, lineage_header),
+                       make_run_loggers(paths)};
+    // The first checkpoint (no births yet) makes the directory resumable at once.
+    session.history.sync();
+    session.lineage.sync();
+    session.state.config = config.resolved;
+    session.state.seed = config.run.seed;
+    session.state.lineage_bytes = session.lineage.size();
+    session.state.lineage_hash = session.lineage.hash_hex();
+    save_checkpoint(paths.checkpoint, session.state);
+    return run_session(session, problem);
+}
+}  // namespace
+
+void add_evolve_command(CLI::App& root, CommandRunner& selected) {
+    auto options = std::make_shared<EvolveOptions>();
+    CLI::App* cmd = root.add_subcommand("evolve", "Run the genetic algorithm of a config into a new run directory");
+    cmd->add_option("config", options->config, "experiment config (JSON)")->required()->check(CLI::ExistingFile);
+    cmd->add_option("--out", options->out, "run directory (default runs/<name>-<YYYYmmdd-HHMMSS>)");
+    options->seed_option = cmd->add_option("--seed", options->seed, "replaces run.seed");
+    options->generations_option = cmd->add_option("--generations", options->generations, "replaces run.generations");
+    options->threads_option = cmd->add_option("--threads", options->threads, "replaces run.threads (0 = all cores)");
+    cmd->add_flag("--force", options->force, "reuse a non-empty run directory (removes its morphogen files)");
+    cmd->callback([options, &selected] { selected = [options] { return run_evolve(*options); }; });
+}
+
+}  // namespace morphogen

@@ -1,0 +1,93 @@
+// `morphogen resume DIR`: continues a run from its checkpoint, exactly as if
+// it had never stopped.
+#include "atomic_file.hpp"
+#include "commands.hpp"
+#include "config_reader.hpp"
+#include "errors.hpp"
+#include "evolution_run.hpp"
+#include "exit_codes.hpp"
+
+#include <filesystem>
+#include <iostream>
+#include <memory>
+
+namespace morphogen {
+
+namespace {
+struct ResumeOptions {
+    std::string dir;
+    std::uint64_t generations = 0;
+    int threads = 0;
+    CLI::Option *generations_option = nullptr, *threads_option = nullptr;
+};
+
+// The keys that decide a run's result must be the same in config.json and the
+// checkpoint; run.generations, threads, checkpoint_every, export_every and
+// name may be edited between sessions.
+void check_same_experiment(const nlohmann::json& checkpoint_config, const nlohmann::json& file_config,
+                           const std::string& file) {
+    auto deciding = [](const nlohmann::json& c) {
+        nlohmann::json out = nlohmann::json::object();
+        for (const char* section : {"network", "growth", "fitness", "evolution"})
+            out[section] = c.is_object() && c.contains(section) ? c[section] : nlohmann::json();
+        out["run"]["seed"] = c.is_object() && c.contains("run") && c["run"].is_object() && c["run"].contains("seed")
+                                 ? c["run"]["seed"]
+                                 : nlohmann::json();
+        return out;
+    };
+    const nlohmann::json a = deciding(checkpoint_config), b = deciding(file_config);
+    if (a == b) return;
+    std::string path = nlohmann::json::diff(a, b).at(0).at("path").get<std::string>();
+    for (char& c : path) c = c == '/' ? '.' : c;
+    if (!path.empty() && path[0] == '.') path.erase(0, 1);
+    throw CheckpointError("checkpoint does not match " + file + ": " + path +
+                          " differs (only run.generations, threads, checkpoint_every, export_every and name may "
+                          "change between sessions)");
+}
+
+int run_resume(const ResumeOptions& o) {
+    const RunPaths paths = run_paths(o.dir);
+    if (!std::filesystem::is_directory(paths.dir)) throw IoError("run directory " + o.dir + " does not exist");
+    if (!std::filesystem::exists(paths.checkpoint))
+        throw CheckpointError("no checkpoint in " + o.dir + " (" + paths.checkpoint.string() + " is missing)");
+    RunLock lock(paths.dir);
+    RunState state = load_checkpoint(paths.checkpoint);
+    const nlohmann::json on_disk = load_json_file(paths.config.string());
+    check_same_experiment(state.config, on_disk, paths.config.string());
+    ConfigOverrides overrides;
+    if (*o.generations_option) overrides.generations = o.generations;
+    if (*o.threads_option) overrides.threads = o.threads;
+    ExperimentConfig config = read_experiment_config(on_disk, paths.config.string(), overrides);
+
+    const auto P = static_cast<std::uint64_t>(config.evolution.population);
+    if (state.ga.births >= (config.run.generations + 1) * P) {
+        std::cout << o.dir << ": generation " << config.run.generations
+                  << " already reached; nothing to do (pass --generations to go further)\n";
+        return exit_code::ok;
+    }
+    // Check everything before changing anything.
+    AppendFile::check_prefix(paths.lineage, state.lineage_bytes, state.lineage_hash);
+    GrowthProblem problem(config);
+
+    if (config.resolved != on_disk) write_file_atomically(paths.config, config.resolved.dump(2) + "\n");
+    AppendFile history = AppendFile::create(paths.history, history_header);
+    for (const HistoryRow& row : state.history) history.write(format_history_row(row));
+    AppendFile lineage = AppendFile::resume(paths.lineage, state.lineage_bytes, state.lineage_hash);
+    RunSession session{paths, config, std::move(state), std::move(history), std::move(lineage),
+                       make_run_loggers(paths)};
+    session.log.both->info("resuming {} after {} births", o.dir, session.state.ga.births);
+    return run_session(session, problem);
+}
+}  // namespace
+
+void add_resume_command(CLI::App& root, CommandRunner& selected) {
+    auto options = std::make_shared<ResumeOptions>();
+    CLI::App* cmd = root.add_subcommand("resume", "Continue a run from its checkpoint");
+    cmd->add_option("dir", options->dir, "run directory")->required();
+    options->generations_option =
+        cmd->add_option("--generations", options->generations, "total generations to reach (replaces run.generations)");
+    options->threads_option = cmd->add_option("--threads", options->threads, "worker threads (0 = all cores)");
+    cmd->callback([options, &selected] { selected = [options] { return run_resume(*options); }; });
+}
+
+}  // namespace morphogen

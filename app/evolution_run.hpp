@@ -1,0 +1,44 @@
+#pragma once
+// The loop shared by `evolve` and `resume`: batches of births until
+// run.generations is complete or a stop is requested, writing lineage rows
+// after every batch and, at generation ends, a history row, the best mesh
+// (every run.export_every) and a checkpoint (every run.checkpoint_every and at
+// the end). Rows written after the last checkpoint are cut off by a resume,
+// so the files always equal those of an uninterrupted run.
+#include "append_file.hpp"
+#include "checkpoint.hpp"
+#include "experiment_config.hpp"
+#include "growth_problem.hpp"
+#include "run_directory.hpp"
+
+#include <spdlog/logger.h>
+
+#include <memory>
+
+namespace morphogen {
+
+struct RunLoggers {
+    std::shared_ptr<spdlog::logger> both;       // stderr + log.txt
+    std::shared_ptr<spdlog::logger> file_only;  // log.txt
+};
+
+// Console (stderr) and file sinks; log.txt is appended to.
+RunLoggers make_run_loggers(const RunPaths& paths);
+
+struct RunSession {
+    RunPaths paths;
+    ExperimentConfig config;  // its run.generations is the target, run.threads the workers
+    RunState state;           // where to continue from (births 0 for a new run)
+    AppendFile history;       // positioned at the end of state.history's rows
+    AppendFile lineage;       // positioned at state.lineage_bytes
+    RunLoggers log;
+};
+
+// Returns exit_code::ok when run.generations is complete, exit_code::interrupted
+// after a Ctrl-C/SIGTERM (the checkpoint is saved first).
+int run_session(RunSession& session, GrowthProblem& problem);
+
+// The number of worker threads for run.threads (0 = all cores).
+int resolve_threads(int threads);
+
+}  // namespace morphogen

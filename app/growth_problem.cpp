@@ -1,0 +1,44 @@
+#include "growth_problem.hpp"
+
+#include "genome_io.hpp"
+#include "mesh_io.hpp"
+#include "network.hpp"
+
+namespace morphogen {
+
+GrowthProblem::GrowthProblem(const ExperimentConfig& config)
+    : layers_(config.network.layers()),
+      dimension_(parameter_count(layers_)),
+      growth_(config.growth),
+      seed_(make_seed(config.growth.seed_mesh, config.growth.seed_radius)),
+      fitness_(config.fitness) {}
+
+std::vector<Block> GrowthProblem::blocks() const { return neuron_blocks(layers_); }
+
+void GrowthProblem::prepare(int workers) {
+    if (workspaces_.size() < static_cast<std::size_t>(workers)) workspaces_.resize(static_cast<std::size_t>(workers));
+}
+
+Evaluation GrowthProblem::evaluate(std::span<const double> params, int worker) const {
+    const Network network(Genome{layers_, std::vector<double>(params.begin(), params.end())});
+    const Grower grower(network, growth_);
+    const GrowthState state = grower.grow(seed_, workspaces_.at(static_cast<std::size_t>(worker)));
+    const FitnessOutcome outcome = fitness_->evaluate(state.mesh.view());
+    return {outcome.score, outcome.valid, outcome.error, static_cast<double>(state.mesh.num_vertices())};
+}
+
+GrowthState GrowthProblem::grow(std::span<const double> params) const {
+    const Network network(Genome{layers_, std::vector<double>(params.begin(), params.end())});
+    const Grower grower(network, growth_);
+    GrowthWorkspace workspace;
+    return grower.grow(seed_, workspace);
+}
+
+void GrowthProblem::export_genome(std::span<const double> params, const std::filesystem::path& stem) const {
+    const GrowthState state = grow(params);
+    write_mesh(state.mesh.view(), stem.string() + ".glb");
+    write_mesh(state.mesh.view(), stem.string() + ".obj");
+    save_genome(Genome{layers_, std::vector<double>(params.begin(), params.end())}, stem.string() + ".genome.json");
+}
+
+}  // namespace morphogen

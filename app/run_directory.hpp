@@ -1,0 +1,43 @@
+#pragma once
+// The run directory (DESIGN.md "Run directory"): where its files live, how a
+// new one is made, and a lock so two processes never write one run.
+#include <chrono>
+#include <filesystem>
+#include <string>
+
+namespace morphogen {
+
+struct RunPaths {
+    std::filesystem::path dir, config, history, lineage, checkpoint, best, log;
+    // best/gen_NNNN (no extension): the stem of generation g's exports.
+    std::filesystem::path best_stem(std::uint64_t generation) const;
+};
+
+RunPaths run_paths(const std::filesystem::path& dir);
+
+// runs/<name>-<YYYYmmdd-HHMMSS> (local time).
+std::filesystem::path default_run_dir(const std::string& name, std::chrono::system_clock::time_point now);
+
+// For a new run: refuses (IoError saying it exists) an existing non-empty
+// directory unless `force`, and a path that is not a directory; then creates
+// the directory. Take the RunLock next, then clear_run_files().
+void create_run_dir(const RunPaths& paths, bool force);
+// Removes the files morphogen writes in a run directory (config.json,
+// history.csv, lineage.csv, checkpoint.json, log.txt, best/gen_*) and nothing
+// else; creates best/.
+void clear_run_files(const RunPaths& paths);
+
+// An exclusive advisory lock on <dir>/.lock for this object's life; throws
+// IoError if another process holds it.
+class RunLock {
+public:
+    explicit RunLock(const std::filesystem::path& dir);
+    RunLock(const RunLock&) = delete;
+    RunLock& operator=(const RunLock&) = delete;
+    ~RunLock();
+
+private:
+    int fd_ = -1;
+};
+
+}  // namespace morphogen

@@ -1,0 +1,40 @@
+#pragma once
+// The rows of history.csv and lineage.csv. Numbers are written in shortest
+// round-trip form (std::to_chars), so the files are exact records: parsing a
+// cell gives back the very double that was computed. An empty cell means "no
+// value" (an invalid individual's fitness; stats of a population with no
+// valid member).
+#include "individual.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+
+namespace morphogen {
+
+inline constexpr const char* history_header =
+    "generation,births,best,mean,median,worst,mean_vertices,invalid,births_per_s,elapsed_s\n";
+inline constexpr const char* lineage_header = "id,birth,parent1,parent2,fitness\n";
+
+struct HistoryRow {
+    std::uint64_t generation = 0;
+    std::uint64_t births = 0;  // births so far, this generation's included
+    std::optional<double> best, mean, median, worst, mean_vertices;  // over valid members of the population
+    std::uint64_t invalid = 0;  // invalid births in this generation
+    double births_per_s = 0.0;  // timing: differs between runs
+    double elapsed_s = 0.0;
+};
+
+// Shortest text that parses back to exactly `value` (finite values only).
+std::string format_number(double value);
+std::string format_history_row(const HistoryRow& row);
+// id,birth,parent1,parent2,fitness (birth repeats the id: ids are birth indices).
+std::string format_lineage_row(const Individual& individual);
+
+nlohmann::json history_row_to_json(const HistoryRow& row);
+// Throws std::invalid_argument naming the defect.
+HistoryRow history_row_from_json(const nlohmann::json& value);
+
+}  // namespace morphogen

@@ -1,0 +1,35 @@
+#include "stop_signals.hpp"
+
+#include <csignal>
+
+namespace morphogen {
+
+namespace {
+volatile std::sig_atomic_t g_signal = 0;
+struct sigaction g_previous_int, g_previous_term;
+
+extern "C" void on_stop_signal(int number) {
+    g_signal = number;
+    std::signal(number, SIG_DFL);  // async-signal-safe; a second signal ends the process
+}
+}  // namespace
+
+StopSignals::StopSignals() {
+    g_signal = 0;
+    struct sigaction action {};
+    action.sa_handler = on_stop_signal;
+    action.sa_flags = SA_RESTART;  // file I/O in progress simply continues
+    sigemptyset(&action.sa_mask);
+    sigaction(SIGINT, &action, &g_previous_int);
+    sigaction(SIGTERM, &action, &g_previous_term);
+}
+
+StopSignals::~StopSignals() {
+    sigaction(SIGINT, &g_previous_int, nullptr);
+    sigaction(SIGTERM, &g_previous_term, nullptr);
+}
+
+bool StopSignals::requested() { return g_signal != 0; }
+int StopSignals::signal_number() { return g_signal; }
+
+}  // namespace morphogen

@@ -1,0 +1,24 @@
+#pragma once
+// The gather phase (ALGORITHM.md §3): each vertex's network inputs from the
+// previous outputs — its own, the mean and the population standard deviation
+// over its neighbours — with the last four overwritten by its growth direction
+// and height. Compiled for x86-64-v3 and baseline, picked at run time.
+#include <Eigen/Core>
+
+namespace morphogen::kernel {
+
+struct GatherInput {
+    int outputs = 0;                    // N
+    int vertices = 0;                   // V
+    const double* previous = nullptr;   // N x V, vertex after vertex
+    const int* neighbour_offsets = nullptr;  // V + 1 offsets into neighbours (CSR)
+    const int* neighbours = nullptr;
+    const Eigen::Vector3d* directions = nullptr;
+    const Eigen::Vector3d* positions = nullptr;
+    double height_scale = 10.0;
+};
+
+// Writes 3N inputs per vertex, vertex after vertex, to `inputs`.
+void gather_inputs(const GatherInput& in, double* inputs);
+
+}  // namespace morphogen::kernel

@@ -1,0 +1,107 @@
+#include "operators.hpp"
+
+#include <stdexcept>
+#include <string>
+
+namespace morphogen {
+
+std::size_t tournament(std::span<const Individual> population, int size, RandomStream& stream) {
+    std::size_t winner = stream.below(population.size());
+    for (int i = 1; i < size; ++i) {
+        const std::size_t slot = stream.below(population.size());
+        if (ranks_above(population[slot], population[winner])) winner = slot;
+    }
+    return winner;
+}
+
+std::vector<double> crossover(std::span<const double> a, std::span<const double> b, std::span<const Block> blocks,
+                              RandomStream& stream) {
+    std::vector<double> child(a.begin(), a.end());
+    for (const auto& [offset, length] : blocks) {
+        if (stream.bernoulli(0.5)) {
+            for (std::size_t i = offset; i < offset + length; ++i) child[i] = b[i];
+        }
+    }
+    return child;
+}
+
+std::size_t mutate(std::vector<double>& params, double rate, double sigma, RandomStream& stream) {
+    std::size_t changed = 0;
+    for (double& p : params) {
+        if (stream.bernoulli(rate)) {
+            p += sigma * stream.normal();
+            ++changed;
+        }
+    }
+    return changed;
+}
+
+std::size_t worst_slot(std::span<const Individual> population) {
+    std::size_t worst = 0;
+    for (std::size_t slot = 1; slot < population.size(); ++slot) {
+        if (ranks_above(population[worst], population[slot])) worst = slot;
+    }
+    return worst;
+}
+
+bool insert_child(std::vector<Individual>& population, Individual child, std::size_t capacity) {
+    if (population.size() < capacity) {
+        population.push_back(std::move(child));
+        return true;
+    }
+    const std::size_t worst = worst_slot(population);
+    // ">=" on fitness alone: a child as good as the worst still replaces it,
+    // which lets the population drift across plateaus.
+    if (!(child.fitness >= population[worst].fitness)) return false;
+    population[worst] = std::move(child);
+    return true;
+}
+
+Individual conceive(std::span<const Individual> snapshot, const GaParams& params, std::span<const Block> blocks,
+                    std::size_t dimension, std::uint64_t seed, std::uint64_t birth) {
+    RandomStream stream(seed, birth);
+    Individual child;
+    child.id = birth;
+    if (birth < static_cast<std::uint64_t>(params.population)) {
+        child.params = random_parameters(dimension, params.init_range, stream);
+        return child;
+    }
+    const Individual& first = snapshot[tournament(snapshot, params.tournament, stream)];
+    const Individual& second = snapshot[tournament(snapshot, params.tournament, stream)];
+    child.parent1 = first.id;
+    if (stream.bernoulli(params.crossover)) {
+        child.parent2 = second.id;
+        child.params = crossover(first.params, second.params, blocks, stream);
+    } else {
+        child.params = first.params;
+    }
+    mutate(child.params, params.mutation_rate, params.mutation_sigma, stream);
+    return child;
+}
+
+std::size_t batch_size(std::uint64_t births, const GaParams& params) {
+    const auto population = static_cast<std::uint64_t>(params.population);
+    const std::uint64_t to_generation_end = population - births % population;
+    return static_cast<std::size_t>(std::min<std::uint64_t>(to_generation_end, static_cast<std::uint64_t>(params.batch)));
+}
+
+std::vector<Block> check_blocks(std::vector<Block> blocks, std::size_t dimension) {
+    if (blocks.empty()) {
+        blocks.reserve(dimension);
+        for (std::size_t i = 0; i < dimension; ++i) blocks.emplace_back(i, 1);
+        return blocks;
+    }
+    std::size_t next = 0;
+    for (const auto& [offset, length] : blocks) {
+        if (offset != next || length == 0)
+            throw std::invalid_argument("crossover blocks must tile the parameters in order; block at " +
+                                        std::to_string(offset) + " expected at " + std::to_string(next));
+        next = offset + length;
+    }
+    if (next != dimension)
+        throw std::invalid_argument("crossover blocks cover " + std::to_string(next) + " of " +
+                                    std::to_string(dimension) + " parameters");
+    return blocks;
+}
+
+}  // namespace morphogen

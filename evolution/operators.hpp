@@ -1,0 +1,62 @@
+#pragma once
+// The GA's operators as free functions (ALGORITHM.md §7), each drawing only
+// from the RandomStream it is given, so a birth is a pure function of
+// (population snapshot, parameters, seed, birth index).
+#include "ga_params.hpp"
+#include "individual.hpp"
+#include "rng.hpp"
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace morphogen {
+
+// True if `a` ranks above `b`: higher fitness; on a tie the higher (younger)
+// id. One strict total order for both selection and replacement, so neither
+// depends on slot order or thread timing. Preferring the younger on ties means
+// tournaments favour new variants and replacement removes the oldest of equally
+// bad members: the population keeps drifting across fitness plateaus (e.g. the
+// many zero-canopy genomes early in a run) instead of freezing.
+inline bool ranks_above(const Individual& a, const Individual& b) {
+    if (a.fitness != b.fitness) return a.fitness > b.fitness;
+    return a.id > b.id;
+}
+
+// Slot of the tournament winner: `size` slots drawn uniformly with
+// replacement, the one that ranks highest wins. population must be non-empty.
+std::size_t tournament(std::span<const Individual> population, int size, RandomStream& stream);
+
+// Child parameters taking each block from `a` or `b` with probability 1/2.
+// Blocks must tile the parameters (checked by check_blocks).
+std::vector<double> crossover(std::span<const double> a, std::span<const double> b, std::span<const Block> blocks,
+                              RandomStream& stream);
+
+// Each parameter, with probability `rate`, gets a N(0, sigma^2) step.
+// Returns how many were changed.
+std::size_t mutate(std::vector<double>& params, double rate, double sigma, RandomStream& stream);
+
+// Slot of the individual that ranks lowest (lowest fitness; on a tie the
+// oldest, i.e. the lower id). population must be non-empty.
+std::size_t worst_slot(std::span<const Individual> population);
+
+// Inserts a finished child: while the population is below `capacity` it is
+// appended; otherwise it replaces the worst if its fitness is at least the
+// worst's. Returns whether the child entered the population.
+bool insert_child(std::vector<Individual>& population, Individual child, std::size_t capacity);
+
+// The birth `birth` (not yet evaluated): a random genome for birth < population,
+// otherwise selection, crossover and mutation from `snapshot`, all drawn from
+// RandomStream(seed, birth).
+Individual conceive(std::span<const Individual> snapshot, const GaParams& params, std::span<const Block> blocks,
+                    std::size_t dimension, std::uint64_t seed, std::uint64_t birth);
+
+// Births in the batch that starts at `births` done: at most params.batch and
+// never past the end of the current generation (a multiple of population).
+std::size_t batch_size(std::uint64_t births, const GaParams& params);
+
+// Blocks for a problem: `blocks` if they tile [0, dimension) in order (throws
+// std::invalid_argument otherwise), or one block per parameter if empty.
+std::vector<Block> check_blocks(std::vector<Block> blocks, std::size_t dimension);
+
+}  // namespace morphogen

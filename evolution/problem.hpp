@@ -1,0 +1,27 @@
+#pragma once
+// What the GA optimises: a map from parameter vectors to scores (larger is
+// better). The GA turns exceptions and non-finite scores into invalid
+// individuals, so evaluate() may throw.
+#include "individual.hpp"
+
+#include <span>
+#include <vector>
+
+namespace morphogen {
+
+class Problem {
+public:
+    virtual ~Problem() = default;
+    // Number of parameters of a genome.
+    virtual std::size_t dimension() const = 0;
+    // The crossover units; they must tile [0, dimension()) in order. Empty
+    // means every parameter is its own block.
+    virtual std::vector<Block> blocks() const { return {}; }
+    // Called before a batch with the number of workers that will call
+    // evaluate(); lets the problem size per-worker scratch space.
+    virtual void prepare(int workers) { (void)workers; }
+    // Must be safe to call concurrently with distinct `worker` in [0, workers).
+    virtual Evaluation evaluate(std::span<const double> params, int worker) const = 0;
+};
+
+}  // namespace morphogen

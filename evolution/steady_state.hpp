@@ -1,0 +1,70 @@
+#pragma once
+// The steady-state GA driver (ALGORITHM.md §7). step() performs one batch:
+// it conceives every child of the batch from the population as it stood
+// before the batch, evaluates them in parallel (OpenMP, dynamic schedule),
+// and inserts them in birth order. Because every child's randomness comes
+// from RandomStream(seed, birth) and insertion is sequential, the state after
+// any number of steps is the same for every thread count.
+//
+// Generation g (g >= 0) is births [g*P, (g+1)*P); generation 0 is the random
+// initial population. Batches never cross a generation boundary.
+#include "ga_params.hpp"
+#include "individual.hpp"
+#include "problem.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace morphogen {
+
+// Everything needed to continue a run exactly (with the parameters and seed).
+struct GaState {
+    std::uint64_t births = 0;                // births done; the next birth's index
+    std::vector<Individual> population;      // slot order; < P members only during generation 0
+    std::optional<Individual> best;          // best valid individual ever born (earliest on ties)
+    std::uint64_t invalid_in_generation = 0; // invalid births so far in the current generation
+};
+
+struct BatchOutcome {
+    std::vector<Individual> children;  // in birth order, each with its fitness
+    std::vector<std::string> errors;   // parallel to children: why it is invalid ("" if valid)
+    std::vector<bool> inserted;        // parallel to children: whether it entered the population
+    bool ends_generation = false;      // the batch completed a generation
+    std::uint64_t generation_invalid = 0;  // if so: invalid births in that generation
+};
+
+class SteadyStateGA {
+public:
+    // Throws std::invalid_argument for parameters out of range or blocks that
+    // do not tile the problem's parameters. `state` is trusted to match (see
+    // ga_state_from_json for checking one read from a file).
+    SteadyStateGA(const GaParams& params, std::uint64_t seed, Problem& problem, GaState state = {});
+
+    // One batch with `threads` workers (<= 0: OpenMP's default). Exceptions
+    // from the problem make that child invalid; only failures outside
+    // evaluation (e.g. out of memory) propagate, after the parallel region.
+    BatchOutcome step(int threads);
+
+    const GaState& state() const { return state_; }
+    const GaParams& params() const { return params_; }
+    std::uint64_t seed() const { return seed_; }
+    // Generations completed so far (generation 0 included).
+    std::uint64_t completed_generations() const { return state_.births / population(); }
+    // True right after the last birth of a generation.
+    bool at_generation_end() const { return state_.births > 0 && state_.births % population() == 0; }
+    // Births needed to complete generation `generation`.
+    std::uint64_t births_to_finish(std::uint64_t generation) const { return (generation + 1) * population(); }
+
+private:
+    std::uint64_t population() const { return static_cast<std::uint64_t>(params_.population); }
+
+    GaParams params_;
+    std::uint64_t seed_;
+    Problem& problem_;
+    std::vector<Block> blocks_;
+    GaState state_;
+};
+
+}  // namespace morphogen

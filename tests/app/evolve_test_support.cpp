@@ -1,0 +1,122 @@
+#include "app/evolve_test_support.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <fcntl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace morphogen::test {
+
+TempDir::TempDir(const std::string& name)
+    : path(fs::temp_directory_path() / ("morphogen-test-" + name + "-" + std::to_string(::getpid()))) {
+    fs::remove_all(path);
+    fs::create_directories(path);
+}
+
+TempDir::~TempDir() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+}
+
+std::string read_text(const fs::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+void write_text(const fs::path& path, const std::string& text) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out << text;
+}
+
+namespace {
+int decode_status(int status) {
+    if (WIFEXITED(status)) return WEXITSTATUS(status);
+    if (WIFSIGNALED(status)) return 128 + WTERMSIG(status);
+    return -1;
+}
+}  // namespace
+
+CliResult run_morphogen(const std::string& args) {
+    const fs::path out = fs::temp_directory_path() / ("morphogen-test-out-" + std::to_string(::getpid()));
+    const std::string command = std::string(MORPHOGEN_EXE) + " " + args + " > " + out.string() + " 2>&1";
+    CliResult result;
+    result.code = decode_status(std::system(command.c_str()));
+    result.output = read_text(out);
+    fs::remove(out);
+    return result;
+}
+
+int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log) {
+    const pid_t pid = ::fork();
+    if (pid == 0) {
+        const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        ::dup2(fd, 1);
+        ::dup2(fd, 2);
+        std::vector<std::string> all{MORPHOGEN_EXE};
+        all.insert(all.end(), args.begin(), args.end());
+        std::vector<char*> argv;
+        for (auto& a : all) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        ::execv(MORPHOGEN_EXE, argv.data());
+        ::_exit(127);
+    }
+    return pid;
+}
+
+int wait_for(int pid) {
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    return decode_status(status);
+}
+
+std::string tiny_config(int generations, int population, int batch) {
+    return R"({"network": {"outputs": 4, "hidden": [4]},
+ "growth": {"steps": 8, "max_vertices": 200},
+ "fitness": {"type": "height"},
+ "evolution": {"population": )" +
+           std::to_string(population) + R"(, "batch": )" + std::to_string(batch) +
+           R"(, "mutation_rate": 0.2},
+ "run": {"generations": )" +
+           std::to_string(generations) + R"(, "seed": 7, "export_every": 0}}
+)";
+}
+
+std::string history_without_times(const fs::path& run_dir) {
+    std::istringstream in(read_text(run_dir / "history.csv"));
+    std::string line, out;
+    while (std::getline(in, line)) {
+        for (int cut = 0; cut < 2; ++cut) line = line.substr(0, line.rfind(','));
+        out += line + "\n";
+    }
+    return out;
+}
+
+nlohmann::json checkpoint_without_times(const fs::path& run_dir) {
+    nlohmann::json content = nlohmann::json::parse(read_text(run_dir / "checkpoint.json"))["content"];
+    content.erase("elapsed_s");
+    for (auto& row : content["history"]) {
+        row.erase("births_per_s");
+        row.erase("elapsed_s");
+    }
+    // run.generations / threads may legitimately differ between sessions.
+    content["config"]["run"].erase("threads");
+    content["config"]["run"].erase("generations");
+    content["config"]["run"].erase("name");
+    return content;
+}
+
+void check_same_results(const fs::path& a, const fs::path& b) {
+    CHECK(read_text(a / "lineage.csv") == read_text(b / "lineage.csv"));
+    CHECK(history_without_times(a) == history_without_times(b));
+    CHECK(checkpoint_without_times(a) == checkpoint_without_times(b));
+}
+
+}  // namespace morphogen::test

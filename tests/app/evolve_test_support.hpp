@@ -1,0 +1,48 @@
+#pragma once
+// Helpers for the evolve/resume tests: temporary run directories, running the
+// morphogen executable, and comparing run files while ignoring timings.
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace morphogen::test {
+
+namespace fs = std::filesystem;
+
+// A fresh empty directory under the system temp dir, removed by the destructor.
+struct TempDir {
+    explicit TempDir(const std::string& name);
+    ~TempDir();
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    fs::path path;
+};
+
+struct CliResult {
+    int code = -1;       // exit status (128 + signal if killed)
+    std::string output;  // stdout and stderr together
+};
+
+// Runs `morphogen <args>` (args are passed through the shell).
+CliResult run_morphogen(const std::string& args);
+
+// Starts `morphogen <args...>` without waiting; output goes to `log`.
+int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log);
+// Waits for a spawned process; returns its exit status (128 + signal if killed).
+int wait_for(int pid);
+
+std::string read_text(const fs::path& path);
+void write_text(const fs::path& path, const std::string& text);
+
+// A config small enough for a run to take milliseconds.
+std::string tiny_config(int generations, int population = 8, int batch = 3);
+
+// history.csv without its two timing columns.
+std::string history_without_times(const fs::path& run_dir);
+// The checkpoint's content minus timings (history timing columns, elapsed_s).
+nlohmann::json checkpoint_without_times(const fs::path& run_dir);
+// Asserts (Catch CHECKs) that two run directories hold the same results.
+void check_same_results(const fs::path& a, const fs::path& b);
+
+}  // namespace morphogen::test

@@ -1,0 +1,213 @@
+// End-to-end `evolve` / `resume` through the executable, with a tiny config:
+// the run directory, determinism across thread counts, exact resume after a
+// stop, a Ctrl-C or a kill -9, refusal of damaged checkpoints and mismatched
+// configs.
+#include "app/evolve_test_support.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <csignal>
+#include <fstream>
+#include <thread>
+
+using namespace morphogen::test;
+
+namespace {
+// Quoted for the shell. (Appending, not "'" + string: GCC 12 warns falsely, -Wrestrict.)
+std::string q(const fs::path& p) {
+    std::string quoted(1, '\'');
+    quoted += p.string();
+    quoted += '\'';
+    return quoted;
+}
+std::string arg(const char* option, int value) {
+    std::string text(option);
+    text += ' ';
+    text += std::to_string(value);
+    return text;
+}
+
+std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
+
+// Waits until history.csv has at least `rows` data rows (or ~10 s passed).
+void wait_for_rows(const fs::path& dir, std::size_t rows) {
+    for (int i = 0; i < 2000; ++i) {
+        if (lines(read_text(dir / "history.csv")) >= rows + 1) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+}
+
+std::uint64_t checkpoint_births(const fs::path& dir) {
+    return checkpoint_without_times(dir)["ga"]["births"].get<std::uint64_t>();
+}
+
+struct TinyRun {
+    TempDir tmp;
+    fs::path config;
+    explicit TinyRun(const std::string& name, int generations = 6) : tmp(name), config(tmp.path / "tiny.json") {
+        write_text(config, tiny_config(generations));
+    }
+    CliResult evolve(const fs::path& out, const std::string& extra = "") const {
+        return run_morphogen("evolve " + q(config) + " --out " + q(out) + " " + extra);
+    }
+};
+}  // namespace
+
+TEST_CASE("evolve writes the run directory", "[app][evolve]") {
+    TinyRun t("evolve-files", 3);
+    const auto run = t.tmp.path / "run";
+    const CliResult r = t.evolve(run, "--threads 1 --generations 2");
+    REQUIRE(r.code == 0);
+    const std::string history = read_text(run / "history.csv");
+    CHECK(history.rfind("generation,births,best,mean,median,worst,mean_vertices,invalid,births_per_s,elapsed_s\n", 0) ==
+          0);
+    CHECK(lines(history) == 4);  // header + generations 0, 1, 2
+    const std::string lineage = read_text(run / "lineage.csv");
+    CHECK(lineage.rfind("id,birth,parent1,parent2,fitness\n0,0,,,", 0) == 0);
+    CHECK(lines(lineage) == 1 + 24);
+    const auto config = nlohmann::json::parse(read_text(run / "config.json"));
+    CHECK(config["run"]["generations"] == 2);  // the override is recorded
+    CHECK(config["run"]["name"] == "tiny");     // derived from the file name
+    CHECK(config["growth"]["speed"] == 0.2);    // defaults filled in
+    CHECK(fs::exists(run / "log.txt"));
+    CHECK(fs::is_empty(run / "best"));  // export_every 0
+
+    SECTION("an existing non-empty directory is refused unless --force") {
+        const CliResult again = t.evolve(run);
+        CHECK(again.code == 3);
+        CHECK_THAT(again.output, Catch::Contains("exists"));
+        CHECK(lines(read_text(run / "history.csv")) == 4);  // untouched
+        CHECK(t.evolve(run, "--force --generations 1").code == 0);
+        CHECK(lines(read_text(run / "history.csv")) == 3);
+    }
+    SECTION("best meshes and genomes are exported every export_every generations") {
+        auto doc = nlohmann::json::parse(tiny_config(3));
+        doc["run"]["export_every"] = 2;
+        write_text(t.tmp.path / "export.json", doc.dump());
+        const auto out = t.tmp.path / "exports";
+        REQUIRE(run_morphogen("evolve " + q(t.tmp.path / "export.json") + " --out " + q(out)).code == 0);
+        for (const char* stem : {"gen_0000", "gen_0002", "gen_0003"})  // every 2nd and the last
+            for (const char* ext : {".glb", ".obj", ".genome.json"}) CHECK(fs::exists(out / "best" / (stem + std::string(ext))));
+        CHECK_FALSE(fs::exists(out / "best" / "gen_0001.obj"));
+    }
+    SECTION("an invalid config is refused before anything is created") {
+        write_text(t.tmp.path / "bad.json", R"({"evolution": {"populaton": 3}})");
+        const CliResult bad = run_morphogen("evolve " + q(t.tmp.path / "bad.json") + " --out " + q(t.tmp.path / "x"));
+        CHECK(bad.code == 2);
+        CHECK_THAT(bad.output, Catch::Contains("evolution.populaton") && Catch::Contains("population"));
+        CHECK_FALSE(fs::exists(t.tmp.path / "x"));
+    }
+}
+
+TEST_CASE("evolve gives the same bytes for 1 or 2 or 8 threads", "[app][evolve][determinism]") {
+    TinyRun t("evolve-threads", 4);
+    for (int threads : {1, 2, 8}) {
+        fs::path out = t.tmp.path / "t";
+        out += std::to_string(threads);
+        REQUIRE(t.evolve(out, arg("--threads", threads)).code == 0);
+    }
+    check_same_results(t.tmp.path / "t1", t.tmp.path / "t2");
+    check_same_results(t.tmp.path / "t1", t.tmp.path / "t8");
+    // and a different seed gives a different run
+    REQUIRE(t.evolve(t.tmp.path / "s", "--seed 8").code == 0);
+    CHECK(read_text(t.tmp.path / "s" / "lineage.csv") != read_text(t.tmp.path / "t1" / "lineage.csv"));
+}
+
+TEST_CASE("resume after a stop equals an uninterrupted run", "[app][resume]") {
+    TinyRun t("resume-stop", 6);
+    const auto whole = t.tmp.path / "whole", parts = t.tmp.path / "parts";
+    REQUIRE(t.evolve(whole, "--threads 2").code == 0);
+    REQUIRE(t.evolve(parts, "--threads 1 --generations 2").code == 0);
+    REQUIRE(run_morphogen("resume " + q(parts) + " --generations 4 --threads 8").code == 0);
+    REQUIRE(run_morphogen("resume " + q(parts) + " --generations 6").code == 0);
+    check_same_results(whole, parts);
+
+    SECTION("resuming a finished run does nothing and exits 0") {
+        const std::string before = read_text(parts / "checkpoint.json") + read_text(parts / "lineage.csv");
+        const CliResult r = run_morphogen("resume " + q(parts));
+        CHECK(r.code == 0);
+        CHECK_THAT(r.output, Catch::Contains("nothing to do"));
+        CHECK(read_text(parts / "checkpoint.json") + read_text(parts / "lineage.csv") == before);
+    }
+    SECTION("rows written after the last checkpoint are cut off") {
+        // As after a kill -9 between writing rows and the next checkpoint.
+        REQUIRE(t.evolve(t.tmp.path / "cut", "--generations 3").code == 0);
+        std::ofstream(t.tmp.path / "cut" / "lineage.csv", std::ios::app) << "999,999,1,,0.5\n1000,10";
+        std::ofstream(t.tmp.path / "cut" / "history.csv", std::ios::app) << "4,40,1,1,1,1,1,0,1,1\n5,";
+        REQUIRE(run_morphogen("resume " + q(t.tmp.path / "cut") + " --generations 6").code == 0);
+        check_same_results(whole, t.tmp.path / "cut");
+    }
+    SECTION("run.generations in config.json may be raised between sessions") {
+        auto config = nlohmann::json::parse(read_text(parts / "config.json"));
+        config["run"]["generations"] = 7;
+        config["run"]["threads"] = 2;
+        write_text(parts / "config.json", config.dump(2));
+        REQUIRE(run_morphogen("resume " + q(parts)).code == 0);
+        CHECK(lines(read_text(parts / "history.csv")) == 1 + 8);
+    }
+}
+
+TEST_CASE("resume after Ctrl-C or kill -9 equals an uninterrupted run", "[app][resume][signals]") {
+    TinyRun t("resume-signal", 100000);  // far more than it will reach before the signal
+    for (int signal : {SIGINT, SIGTERM, SIGKILL}) {
+        CAPTURE(signal);
+        const auto dir = t.tmp.path / ("sig" + std::to_string(signal));
+        const int pid = spawn_morphogen({"evolve", t.config.string(), "--out", dir.string(), "--threads", "2"},
+                                        t.tmp.path / "spawn.log");
+        wait_for_rows(dir, 3);
+        ::kill(pid, signal);
+        const int code = wait_for(pid);
+        if (signal == SIGKILL) {
+            CHECK(code == 128 + SIGKILL);
+        } else {
+            CHECK(code == 130);
+            CHECK_THAT(read_text(t.tmp.path / "spawn.log"), Catch::Contains("morphogen resume"));
+        }
+        // Continue to a few generations past where it stopped, then compare.
+        const std::uint64_t stopped = checkpoint_births(dir) / 8;
+        const std::string target = std::to_string(std::max<std::uint64_t>(stopped + 2, 4));
+        REQUIRE(run_morphogen("resume " + q(dir) + " --generations " + target + " --threads 1").code == 0);
+        const auto whole = t.tmp.path / ("whole" + std::to_string(signal));
+        REQUIRE(t.evolve(whole, "--generations " + target + " --threads 1").code == 0);
+        check_same_results(whole, dir);
+    }
+}
+
+TEST_CASE("a damaged or mismatched checkpoint is refused and left as it was", "[app][resume][checkpoint]") {
+    TinyRun t("resume-refuse", 2);
+    const auto run = t.tmp.path / "run";
+    REQUIRE(t.evolve(run, "--generations 1").code == 0);
+    const std::string good = read_text(run / "checkpoint.json");
+    const std::string config = read_text(run / "config.json");
+
+    auto expect_refusal = [&](const std::string& checkpoint, const std::string& why) {
+        write_text(run / "checkpoint.json", checkpoint);
+        const CliResult r = run_morphogen("resume " + q(run) + " --generations 2");
+        CHECK(r.code == 5);
+        CHECK_THAT(r.output, Catch::Contains("checkpoint") && Catch::Contains(why));
+        CHECK(read_text(run / "checkpoint.json") == checkpoint);
+    };
+    expect_refusal(good.substr(0, good.size() / 2), "truncated");
+    expect_refusal("", "empty");
+    std::string flipped = good;
+    flipped[good.find("\"params\":[") + 12] ^= 1;  // a digit of a genome
+    expect_refusal(flipped, "hash");
+    std::string version = good;
+    version.replace(version.find("\"version\":1"), 11, "\"version\":2");
+    expect_refusal(version, "version");
+
+    auto edited = nlohmann::json::parse(config);
+    edited["evolution"]["mutation_sigma"] = 0.5;
+    write_text(run / "config.json", edited.dump(2));
+    write_text(run / "checkpoint.json", good);
+    const CliResult r = run_morphogen("resume " + q(run) + " --generations 2");
+    CHECK(r.code == 5);
+    CHECK_THAT(r.output, Catch::Contains("checkpoint") && Catch::Contains("evolution.mutation_sigma"));
+    CHECK(read_text(run / "checkpoint.json") == good);
+
+    write_text(run / "config.json", config);
+    write_text(run / "lineage.csv", "id,birth,parent1,parent2,fitness\n");
+    CHECK(run_morphogen("resume " + q(run) + " --generations 2").code == 5);
+    CHECK(read_text(run / "checkpoint.json") == good);
+}

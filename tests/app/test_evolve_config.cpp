@@ -1,0 +1,255 @@
+// The experiment config: every error at once with its path, nearest-key
+// suggestions, invalid JSON with line and column, overrides, and
+// configs/schema.json kept in step with the reader (validation of the
+// shipped configs, defaults and ranges compared key by key).
+#include "app/evolve_test_support.hpp"
+#include "errors.hpp"
+#include "experiment_config.hpp"
+
+#include <catch2/catch.hpp>
+#include <valijson/adapters/nlohmann_json_adapter.hpp>
+#include <valijson/schema.hpp>
+#include <valijson/schema_parser.hpp>
+#include <valijson/validation_results.hpp>
+#include <valijson/validator.hpp>
+
+#include <cmath>
+#include <functional>
+#include <limits>
+
+using namespace morphogen;
+using namespace morphogen::test;
+using nlohmann::json;
+
+namespace {
+const fs::path source_dir = MORPHOGEN_SOURCE_DIR;
+
+json schema_document() { return json::parse(read_text(source_dir / "configs" / "schema.json")); }
+
+// "" if `document` is valid under configs/schema.json, else the errors.
+std::string schema_errors(const json& document) {
+    static const json schema_json = schema_document();
+    static const auto schema = [] {
+        auto s = std::make_unique<valijson::Schema>();
+        valijson::SchemaParser parser(valijson::SchemaParser::kDraft7);
+        valijson::adapters::NlohmannJsonAdapter adapter(schema_json);
+        parser.populateSchema(adapter, *s);
+        return s;
+    }();
+    valijson::Validator validator;
+    valijson::ValidationResults results;
+    valijson::adapters::NlohmannJsonAdapter target(document);
+    if (validator.validate(*schema, target, &results)) return "";
+    std::string out;
+    valijson::ValidationResults::Error error;
+    while (results.popError(error)) {
+        std::string context;
+        for (const auto& c : error.context) context += c;
+        out += context + ": " + error.description + "\n";
+    }
+    return out.empty() ? "invalid" : out;
+}
+
+std::string config_errors(const json& document) {
+    try {
+        read_experiment_config(document, "test.json");
+        return "";
+    } catch (const ConfigError& e) {
+        return e.what();
+    }
+}
+
+// Every fitness type with the smallest section that makes it valid.
+std::vector<json> fitness_sections() {
+    return {json{{"type", "canopy"}},
+            json{{"type", "light"}},
+            json{{"type", "height"}},
+            json{{"type", "sum"}, {"terms", json::array({json{{"type", "canopy"}}, json{{"type", "light"}}})}}};
+}
+
+// Calls `visit(path, schema_of_key, resolved_value)` for every leaf key of a
+// resolved config, following the schema (fitness terms through $ref).
+void walk(const json& schema_root, const json& schema, const json& value, const std::string& path,
+          const std::function<void(const std::string&, const json&, const json&)>& visit) {
+    const json* s = &schema;
+    if (s->contains("$ref")) s = &schema_root["definitions"][(*s)["$ref"].get<std::string>().substr(14)];
+    if (value.is_object() && s->contains("properties")) {
+        for (const auto& [key, item] : value.items()) {
+            INFO(path + "." + key);
+            REQUIRE((*s)["properties"].contains(key));
+            walk(schema_root, (*s)["properties"][key], item, path.empty() ? key : path + "." + key, visit);
+        }
+        return;
+    }
+    if (value.is_array() && s->contains("items") && s->at("items").contains("$ref")) {
+        for (std::size_t i = 0; i < value.size(); ++i)
+            walk(schema_root, (*s)["items"], value[i], path + "[" + std::to_string(i) + "]", visit);
+        return;
+    }
+    visit(path, *s, value);
+}
+}  // namespace
+
+TEST_CASE("{} is valid and every default is filled in", "[app][config]") {
+    const ExperimentConfig config = read_experiment_config(json::object(), "empty");
+    CHECK(config.evolution.population == 100);
+    CHECK(config.evolution.tournament == 3);
+    CHECK(config.evolution.crossover == 0.3);
+    CHECK(config.evolution.mutation_rate == 0.05);
+    CHECK(config.evolution.mutation_sigma == 0.3);
+    CHECK(config.evolution.batch == 32);
+    CHECK(config.evolution.init_range == 2.0);
+    CHECK(config.run.seed == 1);
+    CHECK(config.run.generations == 100);
+    CHECK(config.run.checkpoint_every == 1);
+    CHECK(config.run.export_every == 1);
+    CHECK(config.run.threads == 0);
+    CHECK(config.run.name.empty());
+    for (const char* section : {"network", "growth", "fitness", "evolution", "run"})
+        CHECK(config.resolved.contains(section));
+    // the resolved config reads back to itself
+    CHECK(read_experiment_config(config.resolved, "resolved").resolved == config.resolved);
+}
+
+TEST_CASE("config errors are reported all at once and each with its path", "[app][config]") {
+    const json document = json::parse(R"({
+        "network": {"outputs": 2, "hiden": [3]},
+        "growth": {"steps": "many"},
+        "evolution": {"populaton": 10, "crossover": 1.5, "batch": 0, "tournament": 2.5},
+        "run": {"seed": -1, "threads": 5000, "name": "a/b", "generatons": 3},
+        "fitnes": {}
+    })");
+    const std::string errors = config_errors(document);
+    for (const char* expected : {"test.json: network.outputs: 2 is out of range",
+                                 "network.hiden: unknown key \"hiden\" (did you mean \"hidden\"?)",
+                                 "growth.steps: expected an integer", "evolution.populaton: unknown key",
+                                 "(did you mean \"population\"?)", "evolution.crossover: 1.5 is out of range [0, 1]",
+                                 "evolution.batch: 0 is out of range", "evolution.tournament: expected an integer",
+                                 "run.seed: -1 is out of range", "run.threads: 5000 is out of range",
+                                 "run.name: \"a/b\" is not a usable directory name",
+                                 "run.generatons: unknown key \"generatons\" (did you mean \"generations\"?)",
+                                 "fitnes: unknown key \"fitnes\" (did you mean \"fitness\"?)"})
+        CHECK_THAT(errors, Catch::Contains(expected));
+    CHECK(std::count(errors.begin(), errors.end(), '\n') == 11);  // 12 issues, one line each
+}
+
+TEST_CASE("invalid JSON is reported with line and column", "[app][config]") {
+    TempDir tmp("config-syntax");
+    write_text(tmp.path / "broken.json", "{\n  \"run\": {\"seed\": 1,}\n}\n");
+    CHECK_THROWS_WITH(load_experiment_config((tmp.path / "broken.json").string()),
+                      Catch::Contains("broken.json: invalid JSON at line 2, column"));
+}
+
+TEST_CASE("command-line overrides are checked like keys and recorded", "[app][config]") {
+    ConfigOverrides overrides;
+    overrides.seed = 42;
+    overrides.generations = 3;
+    overrides.threads = 2;
+    const auto config = read_experiment_config(json{{"run", {{"seed", 5}}}}, "x", overrides);
+    CHECK(config.run.seed == 42);
+    CHECK(config.resolved["run"]["generations"] == 3);
+    CHECK(config.resolved["run"]["threads"] == 2);
+    overrides.threads = -1;
+    CHECK_THROWS_WITH(read_experiment_config(json::object(), "x", overrides), Catch::Contains("run.threads"));
+    CHECK(run_name_from_path("some/dir/my run.v2.json") == "my_run.v2");
+}
+
+TEST_CASE("shipped configs and the default config are valid under schema.json", "[app][config][schema]") {
+    for (const char* name : {"canopy.json", "quick.json"}) {
+        INFO(name);
+        const auto path = source_dir / "configs" / name;
+        const json document = json::parse(read_text(path));
+        CHECK(schema_errors(document) == "");
+        const ExperimentConfig config = load_experiment_config(path.string());
+        CHECK(schema_errors(config.resolved) == "");
+    }
+    CHECK(schema_errors(read_experiment_config(json::object(), "{}").resolved) == "");
+    CHECK(schema_errors(json::object()) == "");
+    for (const json& fitness : fitness_sections()) {
+        INFO(fitness.dump());
+        CHECK(schema_errors(read_experiment_config(json{{"fitness", fitness}}, "f").resolved) == "");
+    }
+    // and the schema rejects what the reader rejects
+    for (const char* bad : {R"({"evolution": {"populaton": 3}})", R"({"run": {"seed": -1}})",
+                            R"({"growth": {"steps": 1.5}})", R"({"fitness": {"type": "light", "height": 3}})",
+                            R"({"fitness": {"type": "sum"}})", R"({"run": {"name": "a/b"}})", R"({"network": []})"}) {
+        INFO(bad);
+        CHECK(schema_errors(json::parse(bad)) != "");
+        CHECK(config_errors(json::parse(bad)) != "");
+    }
+}
+
+TEST_CASE("schema.json defaults equal the reader's defaults", "[app][config][schema]") {
+    const json schema = schema_document();
+    std::size_t compared = 0;
+    auto compare = [&](const std::string& path, const json& key_schema, const json& value) {
+        INFO(path);
+        REQUIRE(key_schema.contains("default"));
+        REQUIRE(key_schema.contains("description"));
+        CHECK(key_schema["default"] == value);
+        ++compared;
+    };
+    walk(schema, schema, read_experiment_config(json::object(), "{}").resolved, "", compare);
+    // The other fitness types: every key but the ones given (type, terms) has its default.
+    auto compare_defaults = [&](const std::string& path, const json& key_schema, const json& value) {
+        const std::string key = path.substr(path.rfind('.') + 1);
+        if (key != "type" && key != "terms") compare(path, key_schema, value);
+    };
+    for (const json& fitness : fitness_sections())
+        walk(schema, schema, read_experiment_config(json{{"fitness", fitness}}, "f").resolved, "", compare_defaults);
+    CHECK(compared > 40);
+    // every section's default is {} (all of its keys default)
+    for (const char* section : {"network", "growth", "fitness", "evolution", "run"})
+        CHECK(schema["properties"][section]["default"] == json::object());
+}
+
+TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]") {
+    // For every numeric key: the bounds are accepted, just beyond them refused,
+    // by both the schema and the reader.
+    const json schema = schema_document();
+    std::size_t probed = 0;
+    auto probe = [&](const std::string& path, const json& key_schema, const json&) {
+        if (key_schema.value("type", "") != "integer" && key_schema.value("type", "") != "number") return;
+        // Build {"section": {..., "key": value}} (fitness keys of a type need that type).
+        const std::string section = path.substr(0, path.find('.'));
+        const std::string key = path.substr(path.find('.') + 1);
+        if (key.find('.') != std::string::npos || key.find('[') != std::string::npos) return;
+        auto document_with = [&](const json& value) {
+            json document = json::object();
+            document[section][key] = value;
+            if (section == "fitness" && (key == "spacing" || key == "min_height")) document[section]["type"] = "light";
+            return document;
+        };
+        const bool integer = key_schema["type"] == "integer";
+        auto beyond = [&](double bound, double direction) {
+            if (integer) return json(static_cast<long long>(bound) + static_cast<long long>(direction));
+            return json(std::nextafter(bound, direction * std::numeric_limits<double>::infinity()));
+        };
+        INFO(path);
+        for (const char* name : {"minimum", "maximum"}) {
+            if (!key_schema.contains(name)) continue;
+            const double bound = key_schema[name].get<double>();
+            const double outward = std::string(name) == "minimum" ? -1.0 : 1.0;
+            const json at = integer ? json(key_schema[name].get<long long>()) : json(bound);
+            CHECK(config_errors(document_with(at)) == "");
+            CHECK(schema_errors(document_with(at)) == "");
+            CHECK_THAT(config_errors(document_with(beyond(bound, outward))), Catch::Contains(path));
+            CHECK(schema_errors(document_with(beyond(bound, outward))) != "");
+            ++probed;
+        }
+        if (key_schema.contains("exclusiveMinimum")) {
+            const double bound = key_schema["exclusiveMinimum"].get<double>();
+            CHECK_THAT(config_errors(document_with(bound)), Catch::Contains(path));
+            CHECK(schema_errors(document_with(bound)) != "");
+            CHECK(config_errors(document_with(beyond(bound, 1.0))) == "");
+            CHECK(schema_errors(document_with(beyond(bound, 1.0))) == "");
+            ++probed;
+        }
+        if (!key_schema.contains("maximum")) {  // unbounded above in both
+            CHECK(config_errors(document_with(integer ? json(1LL << 40) : json(1e300))) == "");
+        }
+    };
+    walk(schema, schema, read_experiment_config(json::object(), "{}").resolved, "", probe);
+    walk(schema, schema, read_experiment_config(json{{"fitness", {{"type", "light"}}}}, "f").resolved, "", probe);
+    CHECK(probed > 25);
+}

@@ -1,0 +1,35 @@
+#pragma once
+// Cheap problems for GA tests: no meshes involved.
+#include "problem.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace morphogen::test {
+
+// Maximise -sum (x_i - 1)^2, with crossover blocks of `block` parameters.
+// Optionally throws / returns NaN for some genomes to exercise invalid children.
+class SphereProblem : public Problem {
+public:
+    explicit SphereProblem(std::size_t dimension = 12, std::size_t block = 3, bool faulty = false)
+        : dimension_(dimension), block_(block), faulty_(faulty) {}
+    std::size_t dimension() const override { return dimension_; }
+    std::vector<Block> blocks() const override {
+        std::vector<Block> out;
+        for (std::size_t i = 0; i < dimension_; i += block_) out.emplace_back(i, std::min(block_, dimension_ - i));
+        return out;
+    }
+    Evaluation evaluate(std::span<const double> params, int) const override {
+        double sum = 0.0;
+        for (double p : params) sum += (p - 1.0) * (p - 1.0);
+        if (faulty_ && params[0] > 1.5) throw std::runtime_error("genome too wild");
+        if (faulty_ && params[1] > 1.5) return {std::nan(""), true, "", 0.0};
+        return {-sum, true, "", static_cast<double>(params.size())};
+    }
+
+private:
+    std::size_t dimension_, block_;
+    bool faulty_;
+};
+
+}  // namespace morphogen::test
