@@ -72,7 +72,8 @@ int run_gallery(const GalleryOptions& options) {
                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
                 entry.fitness = config.fitness->evaluate(state.mesh.view());
                 entry.mesh = {state.mesh.positions(), state.mesh.faces()};
-                write_mesh(entry.mesh.view(), (dir / entry_name(i, options.format)).string());
+                if (options.format != "none")
+                    write_mesh(entry.mesh.view(), (dir / entry_name(i, options.format)).string());
             } catch (const std::exception& e) {
                 entry.error = e.what();
             }
@@ -135,7 +136,8 @@ void add_gallery_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--count", options->count, "Number of random genomes")->required()->check(CLI::Range(1, 1'000'000));
     cmd->add_option("--seed", options->seed, "Seed of the first genome (genome i uses seed + i)")->required();
     cmd->add_option("--out", options->out, "Output directory")->required();
-    cmd->add_option("--format", options->format, "Mesh format of the entries")->check(CLI::IsMember({"obj", "glb"}));
+    cmd->add_option("--format", options->format, "Mesh format of the entries (none: only summary.csv)")
+        ->check(CLI::IsMember({"obj", "glb", "ply", "none"}));
     cmd->add_option("--png", options->png, "Also render a contact sheet of all entries to this PNG");
     cmd->add_option("--columns", options->columns, "Columns of the contact sheet")->check(CLI::Range(1, 100));
     cmd->add_option("--threads", options->threads, "Threads (0 = all cores)")->check(CLI::Range(0, 4096));

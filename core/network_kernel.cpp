@@ -89,6 +89,26 @@ template <class T, class Bits>
     }
 }
 
+// Writes rows[0..3][k] (4 vertices, `features` each) to out[k * stride + v]:
+// 4 x 4 tiles transposed in registers, the last features one by one.
+[[gnu::always_inline]] inline void transpose_into(const double* const rows[lanes], int features, double* out,
+                                                  int stride) {
+    int k = 0;
+    for (; k + lanes <= features; k += lanes) {
+        const v4 r0 = load(rows[0] + k), r1 = load(rows[1] + k), r2 = load(rows[2] + k), r3 = load(rows[3] + k);
+        const v4 t0 = __builtin_shufflevector(r0, r1, 0, 4, 2, 6);
+        const v4 t1 = __builtin_shufflevector(r0, r1, 1, 5, 3, 7);
+        const v4 t2 = __builtin_shufflevector(r2, r3, 0, 4, 2, 6);
+        const v4 t3 = __builtin_shufflevector(r2, r3, 1, 5, 3, 7);
+        store(out + (k + 0) * stride, __builtin_shufflevector(t0, t2, 0, 1, 4, 5));
+        store(out + (k + 1) * stride, __builtin_shufflevector(t1, t3, 0, 1, 4, 5));
+        store(out + (k + 2) * stride, __builtin_shufflevector(t0, t2, 2, 3, 6, 7));
+        store(out + (k + 3) * stride, __builtin_shufflevector(t1, t3, 2, 3, 6, 7));
+    }
+    for (; k < features; ++k)
+        for (int v = 0; v < lanes; ++v) out[k * stride + v] = rows[v][k];
+}
+
 }  // namespace
 
 double sigmoid_vectorizable(double a) { return sigmoid_generic<double, std::uint64_t>(a); }
@@ -107,9 +127,10 @@ void evaluate(const std::vector<Layer>& layers, const double* input, double* out
         const int n = static_cast<int>(std::min<std::ptrdiff_t>(B, count - v0));
         // Transpose the block to feature-major; a short last block repeats its last vertex.
         double* in = buffer[0];
-        for (int v = 0; v < B; ++v) {
-            const double* src = input + (v0 + std::min(v, n - 1)) * I;
-            for (int k = 0; k < I; ++k) in[k * B + v] = src[k];
+        for (int group = 0; group < B; group += lanes) {
+            const double* rows[lanes];
+            for (int v = 0; v < lanes; ++v) rows[v] = input + (v0 + std::min(group + v, n - 1)) * I;
+            transpose_into(rows, I, in + group, B);
         }
         int current = 0;
         for (const Layer& layer : layers) {
