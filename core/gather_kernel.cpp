@@ -7,35 +7,62 @@ namespace morphogen::kernel {
 
 namespace {
 
+// Mean and population deviation of `count` neighbour rows, channel by channel,
+// in two passes (no cancellation). Local accumulators: they cannot alias the
+// outputs, so the channel loops vectorise without run-time overlap checks.
+template <int N>
+[[gnu::always_inline]] inline void mean_and_deviation(const double* previous, const int* first, const int* last,
+                                                      double* mean_out, double* deviation_out) {
+    double mean[N] = {}, deviation[N] = {};
+    const double inverse_count = 1.0 / static_cast<double>(last - first);
+    for (const int* u = first; u != last; ++u) {
+        const double* wu = previous + static_cast<std::ptrdiff_t>(N) * *u;
+        for (int c = 0; c < N; ++c) mean[c] += wu[c];
+    }
+    for (int c = 0; c < N; ++c) mean[c] *= inverse_count;
+    for (const int* u = first; u != last; ++u) {
+        const double* wu = previous + static_cast<std::ptrdiff_t>(N) * *u;
+        for (int c = 0; c < N; ++c) {
+            const double d = wu[c] - mean[c];
+            deviation[c] += d * d;
+        }
+    }
+    for (int c = 0; c < N; ++c) {
+        mean_out[c] = mean[c];
+        deviation_out[c] = std::sqrt(deviation[c] * inverse_count);
+    }
+}
+
+// Any N: the same computation with the outputs as accumulators.
+[[gnu::always_inline]] inline void mean_and_deviation(int N, const double* previous, const int* first,
+                                                      const int* last, double* mean, double* deviation) {
+    const double inverse_count = 1.0 / static_cast<double>(last - first);
+    std::fill_n(mean, N, 0.0);
+    std::fill_n(deviation, N, 0.0);
+    for (const int* u = first; u != last; ++u)
+        for (int c = 0; c < N; ++c) mean[c] += previous[static_cast<std::ptrdiff_t>(N) * *u + c];
+    for (int c = 0; c < N; ++c) mean[c] *= inverse_count;
+    for (const int* u = first; u != last; ++u)
+        for (int c = 0; c < N; ++c) {
+            const double d = previous[static_cast<std::ptrdiff_t>(N) * *u + c] - mean[c];
+            deviation[c] += d * d;
+        }
+    for (int c = 0; c < N; ++c) deviation[c] = std::sqrt(deviation[c] * inverse_count);
+}
+
 // N_FIXED > 0 lets the compiler unroll and vectorise the channel loops fully.
 template <int N_FIXED>
 [[gnu::always_inline]] inline void gather_all(const GatherInput& in, double* inputs) {
     const int N = N_FIXED > 0 ? N_FIXED : in.outputs;
     for (int i = 0; i < in.vertices; ++i) {
         double* own = inputs + static_cast<std::ptrdiff_t>(3 * N) * i;
-        double* mean = own + N;
-        double* deviation = own + 2 * N;
         std::copy_n(in.previous + static_cast<std::ptrdiff_t>(N) * i, N, own);
-
         const int* first = in.neighbours + in.neighbour_offsets[i];
         const int* last = in.neighbours + in.neighbour_offsets[i + 1];
-        const double inverse_count = 1.0 / static_cast<double>(last - first);
-        for (int c = 0; c < N; ++c) mean[c] = 0.0;
-        for (const int* u = first; u != last; ++u) {
-            const double* wu = in.previous + static_cast<std::ptrdiff_t>(N) * *u;
-            for (int c = 0; c < N; ++c) mean[c] += wu[c];
-        }
-        for (int c = 0; c < N; ++c) mean[c] *= inverse_count;
-        // Two passes: the deviation without cancellation.
-        for (int c = 0; c < N; ++c) deviation[c] = 0.0;
-        for (const int* u = first; u != last; ++u) {
-            const double* wu = in.previous + static_cast<std::ptrdiff_t>(N) * *u;
-            for (int c = 0; c < N; ++c) {
-                const double d = wu[c] - mean[c];
-                deviation[c] += d * d;
-            }
-        }
-        for (int c = 0; c < N; ++c) deviation[c] = std::sqrt(deviation[c] * inverse_count);
+        if constexpr (N_FIXED > 0)
+            mean_and_deviation<N_FIXED>(in.previous, first, last, own + N, own + 2 * N);
+        else
+            mean_and_deviation(N, in.previous, first, last, own + N, own + 2 * N);
 
         const Eigen::Vector3d& h = in.directions[i];
         own[3 * N - 4] = 0.5 + 0.5 * h.x();

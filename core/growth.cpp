@@ -143,10 +143,7 @@ void Grower::split(GrowthState& state) const {
 }
 
 void Grower::flip(GrowthState& state) const {
-    TriMesh& mesh = state.mesh;
-    const int F = mesh.num_faces();
-    for (int f = 0; f < F; ++f)
-        for (int e = 0; e < 3; ++e) mesh.try_flip(f, e, flip_criteria_);
+    state.mesh.flip_pass(flip_criteria_);
 }
 
 void Grower::step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times) const {

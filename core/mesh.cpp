@@ -189,6 +189,14 @@ bool TriMesh::try_flip(int f, int e, const FlipCriteria& criteria) {
     return true;
 }
 
+int TriMesh::flip_pass(const FlipCriteria& criteria) {
+    int flips = 0;
+    const int F = num_faces();
+    for (int f = 0; f < F; ++f)
+        for (int e = 0; e < 3; ++e) flips += try_flip(f, e, criteria);
+    return flips;
+}
+
 std::vector<std::string> TriMesh::check() const {
     TriMesh fresh;
     fresh.positions_ = positions_;

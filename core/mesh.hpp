@@ -102,6 +102,11 @@ public:
     // f := (A,B,C), g := (C,D,A). Returns whether it flipped; never throws.
     bool try_flip(int f, int e, const FlipCriteria& criteria);
 
+    // One flip pass (ALGORITHM.md §4.4): try_flip(f, e) for f = 0..F-1 and
+    // e = 0, 1, 2 in order, each flip taking effect at once. Returns the
+    // number of flips.
+    int flip_pass(const FlipCriteria& criteria);
+
     // Every invariant above, recomputed from the face list; empty = valid.
     std::vector<std::string> check() const;
     // Throws MeshError("<source>: <defects>") if check() finds anything.

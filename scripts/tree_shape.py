@@ -2,11 +2,13 @@
 """Describe grown meshes in numbers: is it a tree?
 
 For each OBJ file: vertex count, height, and the xy convex-hull area
-("footprint") of the vertices in horizontal slabs: near the ground, at trunk
-height, and above the canopy height. A tree has a small footprint low down
-and a wide one above the canopy height. Pure Python (no numpy needed).
+("footprint") of the vertices in horizontal slabs one unit thick: at the
+ground [0,1), at half the canopy height, and everything above the canopy
+height. A tree has a small footprint low down and a wide one above the
+canopy height. --profile adds the footprint of every one-unit slab from the
+ground up. Pure Python (no numpy needed).
 
-usage: scripts/tree_shape.py [--canopy-height 10] MESH.obj...
+usage: scripts/tree_shape.py [--canopy-height 10] [--profile] MESH.obj...
 """
 import argparse
 import sys
@@ -51,25 +53,30 @@ def slab_footprint(vertices, lo, hi):
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     parser.add_argument("--canopy-height", type=float, default=10.0)
+    parser.add_argument("--profile", action="store_true", help="footprint of every one-unit slab")
     parser.add_argument("meshes", nargs="+")
     args = parser.parse_args()
     h = args.canopy_height
-    print("mesh,vertices,height,footprint_ground,footprint_trunk,footprint_canopy,footprint_all")
+    header = "mesh,vertices,height,footprint_ground,footprint_half_height,footprint_canopy,footprint_all"
+    print(header + (",profile" if args.profile else ""))
     for path in args.meshes:
         v = read_obj_vertices(path)
         if not v:
             print(f"{path}: no vertices", file=sys.stderr)
             continue
         top = max(z for _, _, z in v)
-        print(",".join([
+        row = [
             path,
             str(len(v)),
             f"{top:.3f}",
-            f"{slab_footprint(v, 0.0, 1.0):.3f}",           # the first unit above the ground
-            f"{slab_footprint(v, 0.25 * h, 0.75 * h):.3f}",  # trunk height
-            f"{slab_footprint(v, h, float('inf')):.3f}",     # above the canopy height
-            f"{hull_area([(x, y) for x, y, _ in v]):.3f}",
-        ]))
+            f"{slab_footprint(v, 0.0, 1.0):.1f}",
+            f"{slab_footprint(v, 0.5 * h - 0.5, 0.5 * h + 0.5):.1f}",
+            f"{slab_footprint(v, h, float('inf')):.1f}",
+            f"{hull_area([(x, y) for x, y, _ in v]):.1f}",
+        ]
+        if args.profile:
+            row.append(" ".join(f"{slab_footprint(v, z, z + 1):.0f}" for z in range(int(top) + 1)))
+        print(",".join(row))
 
 
 if __name__ == "__main__":
