@@ -1,4 +1,5 @@
 // The software renderer, contact sheets and the `render` subcommand.
+#include "support/temp_dir.hpp"
 #include "commands.hpp"
 #include "errors.hpp"
 #include "mesh_io.hpp"
@@ -19,24 +20,10 @@
 #include <unistd.h>
 
 using namespace morphogen;
+using morphogen::testing::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-struct TempDir {
-    fs::path dir;
-    TempDir() {
-        static int counter = 0;
-        dir = fs::temp_directory_path() /
-              ("morphogen_test_render_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-        fs::create_directories(dir);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-    }
-    std::string file(const std::string& name) const { return (dir / name).string(); }
-};
 
 // Axis-aligned cube of edge 2*h standing on z = 0, outward faces.
 MeshArrays cube(double h) {

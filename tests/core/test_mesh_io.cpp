@@ -1,5 +1,6 @@
 // Mesh files: exact round trips (OBJ, PLY, OFF), STL/GLB structure, and a
 // clear IoError naming the file for every malformed input.
+#include "support/temp_dir.hpp"
 #include "errors.hpp"
 #include "mesh_io.hpp"
 
@@ -18,30 +19,10 @@
 #include <unistd.h>
 
 using namespace morphogen;
+using morphogen::testing::TempDir;
 namespace fs = std::filesystem;
 
 namespace {
-
-// A fresh directory per test case, removed afterwards.
-struct TempDir {
-    fs::path dir;
-    TempDir() {
-        static int counter = 0;
-        dir = fs::temp_directory_path() /
-              ("morphogen_test_mesh_io_" + std::to_string(::getpid()) + "_" + std::to_string(counter++));
-        fs::create_directories(dir);
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(dir, ec);
-    }
-    std::string file(const std::string& name) const { return (dir / name).string(); }
-    std::string write(const std::string& name, const std::string& bytes) const {
-        const std::string path = file(name);
-        std::ofstream(path, std::ios::binary) << bytes;
-        return path;
-    }
-};
 
 // Unit cube with outward faces, corners at awkward (non-short) coordinates so
 // that exactness is really tested.
