@@ -9,6 +9,16 @@ namespace morphogen {
 using nlohmann::json;
 
 namespace {
+
+// Reads section `name` of `top` with `read` and records its resolved values.
+template <class Read>
+auto read_section(ObjectReader& top, const std::string& name, ConfigIssues& issues, Read read) {
+    ObjectReader reader(top.raw(name), name, issues);
+    auto value = read(reader);
+    top.set_resolved(name, reader.resolved());
+    return value;
+}
+
 constexpr long long max_exact_integer = 9007199254740991LL;  // 2^53 - 1
 
 bool valid_name(const std::string& name) {
@@ -89,25 +99,11 @@ ExperimentConfig read_experiment_config(const json& original, const std::string&
     if (const json* schema = top.raw("$schema"); schema != nullptr && !schema->is_string())
         issues.add("$schema", "expected a string (the path or URL of the schema), got " + schema->dump());
 
-    ObjectReader network(top.raw("network"), "network", issues);
-    config.network = read_network_params(network);
-    top.set_resolved("network", network.resolved());
-
-    ObjectReader growth(top.raw("growth"), "growth", issues);
-    config.growth = read_growth_params(growth);
-    top.set_resolved("growth", growth.resolved());
-
-    ObjectReader fitness(top.raw("fitness"), "fitness", issues);
-    config.fitness = read_fitness(fitness);
-    top.set_resolved("fitness", fitness.resolved());
-
-    ObjectReader evolution(top.raw("evolution"), "evolution", issues);
-    config.evolution = read_evolution_params(evolution);
-    top.set_resolved("evolution", evolution.resolved());
-
-    ObjectReader run(top.raw("run"), "run", issues);
-    config.run = read_run_params(run);
-    top.set_resolved("run", run.resolved());
+    config.network = read_section(top, "network", issues, read_network_params);
+    config.growth = read_section(top, "growth", issues, read_growth_params);
+    config.fitness = read_section(top, "fitness", issues, read_fitness);
+    config.evolution = read_section(top, "evolution", issues, read_evolution_params);
+    config.run = read_section(top, "run", issues, read_run_params);
 
     top.finish();
     issues.throw_if_any(source);
