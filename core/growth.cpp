@@ -120,10 +120,10 @@ void Grower::split(GrowthState& state) const {
         const double* wb = outputs.data() + static_cast<std::ptrdiff_t>(N) * b;
         const double* wc = outputs.data() + static_cast<std::ptrdiff_t>(N) * c;
         const Vec3 cross = mesh.face_cross(f);
-        const double area = 0.5 * cross.norm();
-        if (!(area > params_.split_area * (0.5 + (wa[1] + wb[1] + wc[1]) / 3.0))) continue;
+        const double twice_area = cross.norm();
+        if (!(0.5 * twice_area > params_.split_area * (0.5 + (wa[1] + wb[1] + wc[1]) / 3.0))) continue;
 
-        const Vec3 normal = cross / cross.norm();
+        const Vec3 normal = cross / twice_area;
         const std::vector<Vec3>& h = state.directions;
         const Vec3 sum = normal + wa[2] * h[a] + wb[2] * h[b] + wc[2] * h[c];
         const double length = sum.norm();

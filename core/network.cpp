@@ -1,7 +1,6 @@
 #include "network.hpp"
 
 #include "errors.hpp"
-#include "network_kernel.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -73,8 +72,8 @@ void Network::evaluate(std::span<const double> input, std::span<double> output, 
     const auto count = static_cast<std::ptrdiff_t>(input.size() / inputs());
     if (input.size() != static_cast<std::size_t>(count * inputs()) || output.size() != static_cast<std::size_t>(count * outputs()))
         throw std::invalid_argument("Network::evaluate: buffer sizes do not match the layers");
-    std::vector<kernel::Layer> layers;
-    layers.reserve(weights_.size());
+    std::vector<kernel::Layer>& layers = workspace.layers;  // keeps its capacity: no allocation per step
+    layers.clear();
     for (std::size_t l = 0; l < weights_.size(); ++l)
         layers.push_back({layers_[l], layers_[l + 1], weights_[l].data(), biases_[l].data()});
     kernel::evaluate(layers, input.data(), output.data(), count, workspace.scratch);

@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Core>
+#include "network_kernel.hpp"
 
 namespace morphogen {
 
@@ -30,6 +30,7 @@ std::vector<int> layer_sizes(int outputs, std::span<const int> hidden);
 // Scratch space reused across evaluations (one per thread).
 struct NetworkWorkspace {
     std::vector<double> scratch;
+    std::vector<kernel::Layer> layers;  // this network's layer table, rebuilt in place
 };
 
 class Network {
