@@ -3,6 +3,8 @@
 #include "errors.hpp"
 
 #include <algorithm>
+#include <bit>
+#include <cstdint>
 #include <cmath>
 #include <unordered_map>
 #include <unordered_set>
@@ -20,6 +22,12 @@ std::string join_defects(const std::vector<std::string>& defects, std::size_t li
     for (std::size_t i = 0; i < defects.size() && i < limit; ++i) text += (i ? "; " : "") + defects[i];
     if (defects.size() > limit) text += "; ... (" + std::to_string(defects.size() - limit) + " more)";
     return text;
+}
+
+// §4.4's first flip test, |AC| < |BD|: one definition for every caller, so
+// the flip pass's marks and try_flip can never round differently.
+inline bool diagonal_shorter(const Vec3& pa, const Vec3& pb, const Vec3& pc, const Vec3& pd) {
+    return (pc - pa).squaredNorm() < (pd - pb).squaredNorm();
 }
 
 }  // namespace
@@ -151,7 +159,7 @@ bool TriMesh::try_flip(int f, int e, const FlipCriteria& criteria) {
 
     if (valence_[B] <= criteria.min_valence || valence_[D] <= criteria.min_valence) return false;
     const Vec3 &pa = positions_[A], &pb = positions_[B], &pc = positions_[C], &pd = positions_[D];
-    if (!((pc - pa).squaredNorm() < (pd - pb).squaredNorm())) return false;
+    if (!diagonal_shorter(pa, pb, pc, pd)) return false;
 
     const Vec3 cross_abd = (pb - pa).cross(pd - pa);
     const Vec3 cross_bcd = (pc - pb).cross(pd - pb);
@@ -189,11 +197,65 @@ bool TriMesh::try_flip(int f, int e, const FlipCriteria& criteria) {
     return true;
 }
 
+bool TriMesh::flip_candidate(int h) const {
+    const int o = opposite_[h];
+    if (!(h < o)) return false;  // the edge is visited from its lower face only (f < g)
+    const Face& t = faces_[h / 3];
+    const int e = h % 3;
+    const Vec3& pb = positions_[t[e]];
+    const Vec3& pd = positions_[t[(e + 1) % 3]];
+    const Vec3& pa = positions_[t[(e + 2) % 3]];
+    const Vec3& pc = positions_[from_vertex(prev(o))];
+    return diagonal_shorter(pa, pb, pc, pd);
+}
+
 int TriMesh::flip_pass(const FlipCriteria& criteria) {
+    // Only a candidate (visited from its lower face, diagonal AC shorter than
+    // BD) can flip, and few are: mark them all in one branch-free sweep, then
+    // run try_flip on the marked half-edges in the order of §4.4 (h = 3f + e).
+    // Positions do not move during the pass, so a mark stays right until a flip
+    // rewrites the quad around an edge: the half-edges of the two flipped faces
+    // and their four outer partners. Their marks are recomputed, for those not
+    // yet visited (index > h), so the pass equals the plain loop exactly.
+    const int H = 3 * num_faces();
+    std::vector<std::uint64_t> marks((static_cast<std::size_t>(H) + 63) / 64, 0);
+    for (int f = 0; f < num_faces(); ++f) {
+        const Face& t = faces_[f];
+        const Vec3* p[3] = {&positions_[t[0]], &positions_[t[1]], &positions_[t[2]]};
+        for (int e = 0; e < 3; ++e) {
+            const int h = 3 * f + e, o = opposite_[h];
+            const Vec3& pc = positions_[from_vertex(prev(o))];
+            const bool mark = (h < o) & diagonal_shorter(*p[(e + 2) % 3], *p[e], pc, *p[(e + 1) % 3]);
+            marks[h >> 6] |= static_cast<std::uint64_t>(mark) << (h & 63);
+        }
+    }
     int flips = 0;
-    const int F = num_faces();
-    for (int f = 0; f < F; ++f)
-        for (int e = 0; e < 3; ++e) flips += try_flip(f, e, criteria);
+    for (std::size_t word = 0; word < marks.size(); ++word) {
+        while (marks[word] != 0) {
+            const int h = static_cast<int>(word * 64) + std::countr_zero(marks[word]);
+            marks[word] &= marks[word] - 1;
+            const int f = h / 3, g = opposite_[h] / 3;
+            if (!try_flip(f, h % 3, criteria)) continue;
+            ++flips;
+            int touched[10];
+            for (int k = 0; k < 3; ++k) {
+                touched[k] = 3 * f + k;
+                touched[3 + k] = 3 * g + k;
+            }
+            touched[6] = opposite_[3 * f + 0];  // A->B's partner
+            touched[7] = opposite_[3 * f + 1];  // B->C's partner
+            touched[8] = opposite_[3 * g + 0];  // C->D's partner
+            touched[9] = opposite_[3 * g + 1];  // D->A's partner
+            for (const int u : touched) {
+                if (u <= h) continue;  // already visited in this pass
+                const std::uint64_t bit = std::uint64_t{1} << (u & 63);
+                if (flip_candidate(u))
+                    marks[u >> 6] |= bit;
+                else
+                    marks[u >> 6] &= ~bit;
+            }
+        }
+    }
     return flips;
 }
 

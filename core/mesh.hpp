@@ -119,6 +119,10 @@ private:
         opposite_[h1] = h2;
         opposite_[h2] = h1;
     }
+    // Whether half-edge h could flip in a pass: h < opposite(h) (the edge's
+    // lower face visits it) and the other diagonal is shorter (§4.4's first
+    // test). Every flip needs this; few edges have it.
+    bool flip_candidate(int h) const;
     // Rebuilds opposite/valence/outgoing from faces; returns defects found.
     std::vector<std::string> build_topology();
 
