@@ -52,10 +52,10 @@ template <int N>
 
 // N_FIXED > 0 lets the compiler unroll and vectorise the channel loops fully.
 template <int N_FIXED>
-[[gnu::always_inline]] inline void gather_all(const GatherInput& in, double* inputs) {
+[[gnu::always_inline]] inline void gather_range(const GatherInput& in, int first, int count, double* inputs) {
     const int N = N_FIXED > 0 ? N_FIXED : in.outputs;
-    for (int i = 0; i < in.vertices; ++i) {
-        double* own = inputs + static_cast<std::ptrdiff_t>(3 * N) * i;
+    for (int i = first; i < first + count; ++i) {
+        double* own = inputs + static_cast<std::ptrdiff_t>(3 * N) * (i - first);
         std::copy_n(in.previous + static_cast<std::ptrdiff_t>(N) * i, N, own);
         const int* first = in.neighbours + in.neighbour_offsets[i];
         const int* last = in.neighbours + in.neighbour_offsets[i + 1];
@@ -75,11 +75,11 @@ template <int N_FIXED>
 }  // namespace
 
 [[gnu::target_clones("arch=x86-64-v3", "default")]]
-void gather_inputs(const GatherInput& in, double* inputs) {
+void gather_inputs(const GatherInput& in, int first, int count, double* inputs) {
     if (in.outputs == 15)
-        gather_all<15>(in, inputs);  // the default network
+        gather_range<15>(in, first, count, inputs);  // the default network
     else
-        gather_all<0>(in, inputs);
+        gather_range<0>(in, first, count, inputs);
 }
 
 }  // namespace morphogen::kernel

@@ -18,7 +18,8 @@ struct GatherInput {
     double height_scale = 10.0;
 };
 
-// Writes 3N inputs per vertex, vertex after vertex, to `inputs`.
-void gather_inputs(const GatherInput& in, double* inputs);
+// Writes the 3N inputs of vertices [first, first + count), vertex after
+// vertex, to `inputs`.
+void gather_inputs(const GatherInput& in, int first, int count, double* inputs);
 
 }  // namespace morphogen::kernel

@@ -61,10 +61,8 @@ GrowthState Grower::start(const Seed& seed) const {
     return state;
 }
 
-void Grower::gather(const GrowthState& state, GrowthWorkspace& workspace) const {
-    const TriMesh& mesh = state.mesh;
+void Grower::build_neighbours(const TriMesh& mesh, GrowthWorkspace& workspace) const {
     const int V = mesh.num_vertices();
-    const int N = network_.outputs();
     // Neighbour lists in CSR form, from one pass over the half-edges: each
     // neighbour of u is the head of exactly one half-edge leaving u.
     std::vector<int>& offsets = workspace.neighbour_offsets;
@@ -80,17 +78,46 @@ void Grower::gather(const GrowthState& state, GrowthWorkspace& workspace) const 
         neighbours[cursor[f[1]]++] = f[2];
         neighbours[cursor[f[2]]++] = f[0];
     }
-    workspace.inputs.resize(static_cast<std::size_t>(3 * N) * V);
-    kernel::GatherInput in;
-    in.outputs = N;
-    in.vertices = V;
+}
+
+namespace {
+
+// What the network's input source needs: the gather of §3 for a block of
+// vertices, and (when timing) the seconds it took.
+struct BlockGather {
+    kernel::GatherInput input;
+    PhaseTimes* times = nullptr;
+
+    static void fill(const void* context, std::ptrdiff_t first, int count, double* rows) {
+        const auto& self = *static_cast<const BlockGather*>(context);
+        if (self.times == nullptr) {
+            kernel::gather_inputs(self.input, static_cast<int>(first), count, rows);
+            return;
+        }
+        const auto start = Clock::now();
+        kernel::gather_inputs(self.input, static_cast<int>(first), count, rows);
+        self.times->gather += std::chrono::duration<double>(Clock::now() - start).count();
+    }
+};
+
+}  // namespace
+
+void Grower::think(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times) const {
+    const TriMesh& mesh = state.mesh;
+    BlockGather gather;
+    gather.times = times;
+    kernel::GatherInput& in = gather.input;
+    in.outputs = network_.outputs();
+    in.vertices = mesh.num_vertices();
     in.previous = state.outputs.data();
-    in.neighbour_offsets = offsets.data();
-    in.neighbours = neighbours.data();
+    in.neighbour_offsets = workspace.neighbour_offsets.data();
+    in.neighbours = workspace.neighbours.data();
     in.directions = state.directions.data();
     in.positions = mesh.positions().data();
     in.height_scale = params_.height_scale;
-    kernel::gather_inputs(in, workspace.inputs.data());
+    workspace.next_outputs.resize(static_cast<std::size_t>(network_.outputs()) * mesh.num_vertices());
+    network_.evaluate(kernel::InputSource{&BlockGather::fill, &gather}, workspace.next_outputs, workspace.network);
+    state.outputs.swap(workspace.next_outputs);
 }
 
 void Grower::move(GrowthState& state) const {
@@ -150,11 +177,13 @@ void Grower::step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* ti
     const int t = state.steps_done;
     PhaseClock clock(times);
     if (times != nullptr) times->vertex_steps += static_cast<std::uint64_t>(state.mesh.num_vertices());
-    gather(state, workspace);
+    build_neighbours(state.mesh, workspace);
     clock.lap(&PhaseTimes::gather);
-    workspace.next_outputs.resize(static_cast<std::size_t>(network_.outputs()) * state.mesh.num_vertices());
-    network_.evaluate(workspace.inputs, workspace.next_outputs, workspace.network);
-    state.outputs.swap(workspace.next_outputs);
+    // Gather and network run together, a block of vertices at a time (the
+    // inputs never leave the L1 cache); the gather's share is timed inside.
+    const double gathered_before = times != nullptr ? times->gather : 0.0;
+    think(state, workspace, times);
+    if (times != nullptr) times->think -= times->gather - gathered_before;
     clock.lap(&PhaseTimes::think);
     move(state);
     clock.lap(&PhaseTimes::move);

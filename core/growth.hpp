@@ -39,7 +39,6 @@ struct PhaseTimes {
 struct GrowthWorkspace {
     // Plain vectors: they keep their capacity as the mesh grows, so steps do
     // not reallocate (and page-fault) fresh buffers.
-    std::vector<double> inputs;        // 3N per vertex
     std::vector<double> next_outputs;  // N per vertex
     std::vector<int> neighbour_offsets, neighbours, cursor;  // CSR neighbour lists
     NetworkWorkspace network;
@@ -62,7 +61,10 @@ public:
                      const StepObserver& observer = {}) const;
 
 private:
-    void gather(const GrowthState& state, GrowthWorkspace& workspace) const;
+    // The neighbour lists (CSR) of the mesh as it stands.
+    void build_neighbours(const TriMesh& mesh, GrowthWorkspace& workspace) const;
+    // Gather (§3) and network (§4.1): new outputs for every vertex.
+    void think(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times) const;
     void move(GrowthState& state) const;
     void split(GrowthState& state) const;
     void flip(GrowthState& state) const;

@@ -68,15 +68,26 @@ Network::Network(const Genome& genome) : layers_(genome.layers), params_(genome.
     }
 }
 
-void Network::evaluate(std::span<const double> input, std::span<double> output, NetworkWorkspace& workspace) const {
-    const auto count = static_cast<std::ptrdiff_t>(input.size() / inputs());
-    if (input.size() != static_cast<std::size_t>(count * inputs()) || output.size() != static_cast<std::size_t>(count * outputs()))
-        throw std::invalid_argument("Network::evaluate: buffer sizes do not match the layers");
+const std::vector<kernel::Layer>& Network::layer_table(NetworkWorkspace& workspace) const {
     std::vector<kernel::Layer>& layers = workspace.layers;  // keeps its capacity: no allocation per step
     layers.clear();
     for (std::size_t l = 0; l < weights_.size(); ++l)
         layers.push_back({layers_[l], layers_[l + 1], weights_[l].data(), biases_[l].data()});
-    kernel::evaluate(layers, input.data(), output.data(), count, workspace.scratch);
+    return layers;
+}
+
+void Network::evaluate(std::span<const double> input, std::span<double> output, NetworkWorkspace& workspace) const {
+    const auto count = static_cast<std::ptrdiff_t>(input.size() / inputs());
+    if (input.size() != static_cast<std::size_t>(count * inputs()) || output.size() != static_cast<std::size_t>(count * outputs()))
+        throw std::invalid_argument("Network::evaluate: buffer sizes do not match the layers");
+    kernel::evaluate(layer_table(workspace), input.data(), output.data(), count, workspace.scratch);
+}
+
+void Network::evaluate(const kernel::InputSource& source, std::span<double> output, NetworkWorkspace& workspace) const {
+    const auto count = static_cast<std::ptrdiff_t>(output.size() / outputs());
+    if (output.size() != static_cast<std::size_t>(count * outputs()) || source.fill == nullptr)
+        throw std::invalid_argument("Network::evaluate: output size does not match the layers, or no input source");
+    kernel::evaluate(layer_table(workspace), source, output.data(), count, workspace.scratch);
 }
 
 std::vector<double> Network::evaluate_reference(std::span<const double> input) const {

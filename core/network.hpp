@@ -48,11 +48,17 @@ public:
     // must hold outputs() * V and receives each vertex's outputs the same way.
     // Agrees with evaluate_reference() to ~1e-15 relative.
     void evaluate(std::span<const double> input, std::span<double> output, NetworkWorkspace& workspace) const;
+    // The same for output.size() / outputs() vertices whose inputs `source`
+    // computes a block at a time (see kernel::InputSource).
+    void evaluate(const kernel::InputSource& source, std::span<double> output, NetworkWorkspace& workspace) const;
 
     // The paper's pseudocode for one vertex, literally; the reference for tests.
     std::vector<double> evaluate_reference(std::span<const double> input) const;
 
 private:
+    // Points workspace.layers at this network's weights.
+    const std::vector<kernel::Layer>& layer_table(NetworkWorkspace& workspace) const;
+
     std::vector<int> layers_;
     std::vector<double> params_;
     // Per layer: weights (out x in, row-major: row j = neuron j) and the

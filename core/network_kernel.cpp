@@ -148,27 +148,28 @@ template <int G>
         for (int v = 0; v < lanes; ++v) rows[v][k] = in[k * block + v];
 }
 
-}  // namespace
-
-double sigmoid_vectorizable(double a) { return sigmoid_generic<double, std::uint64_t>(a); }
-
-[[gnu::target_clones("arch=x86-64-v3", "default")]]
-void evaluate(const std::vector<Layer>& layers, const double* input, double* output, std::ptrdiff_t count,
-              std::vector<double>& scratch) {
+// The whole network over `count` vertices, block by block; rows_of(v0, n)
+// returns the inputs of vertices v0..v0+n-1, vertex after vertex.
+template <class RowsOf>
+[[gnu::always_inline]] inline void evaluate_blocks(const std::vector<Layer>& layers, RowsOf rows_of, double* output,
+                                                   std::ptrdiff_t count, std::vector<double>& scratch) {
     constexpr int B = block;
     int widest = 0;
     for (const Layer& l : layers) widest = std::max({widest, l.inputs, l.outputs});
-    scratch.resize(2 * static_cast<std::size_t>(widest) * B);
-    double* const buffer[2] = {scratch.data(), scratch.data() + static_cast<std::ptrdiff_t>(widest) * B};
     const int I = layers.front().inputs, O = layers.back().outputs;
+    // Two activation buffers, then room for one block of input rows.
+    scratch.resize(2 * static_cast<std::size_t>(widest) * B + static_cast<std::size_t>(I) * B);
+    double* const buffer[2] = {scratch.data(), scratch.data() + static_cast<std::ptrdiff_t>(widest) * B};
+    double* const row_space = scratch.data() + 2 * static_cast<std::ptrdiff_t>(widest) * B;
 
     for (std::ptrdiff_t v0 = 0; v0 < count; v0 += B) {
         const int n = static_cast<int>(std::min<std::ptrdiff_t>(B, count - v0));
+        const double* input = rows_of(v0, n, row_space);
         // Transpose the block to feature-major; a short last block repeats its last vertex.
         double* in = buffer[0];
         for (int group = 0; group < B; group += lanes) {
             const double* rows[lanes];
-            for (int v = 0; v < lanes; ++v) rows[v] = input + (v0 + std::min(group + v, n - 1)) * I;
+            for (int v = 0; v < lanes; ++v) rows[v] = input + std::min(group + v, n - 1) * I;
             rows_to_block(rows, I, in + group);
         }
         int current = 0;
@@ -188,6 +189,30 @@ void evaluate(const std::vector<Layer>& layers, const double* input, double* out
                 for (int j = 0; j < O; ++j) output[(v0 + v) * O + j] = result[j * B + v];
         }
     }
+}
+
+}  // namespace
+
+double sigmoid_vectorizable(double a) { return sigmoid_generic<double, std::uint64_t>(a); }
+
+[[gnu::target_clones("arch=x86-64-v3", "default")]]
+void evaluate(const std::vector<Layer>& layers, const double* input, double* output, std::ptrdiff_t count,
+              std::vector<double>& scratch) {
+    const std::ptrdiff_t I = layers.front().inputs;
+    evaluate_blocks(
+        layers, [&](std::ptrdiff_t v0, int, double*) { return input + v0 * I; }, output, count, scratch);
+}
+
+[[gnu::target_clones("arch=x86-64-v3", "default")]]
+void evaluate(const std::vector<Layer>& layers, const InputSource& source, double* output, std::ptrdiff_t count,
+              std::vector<double>& scratch) {
+    evaluate_blocks(
+        layers,
+        [&](std::ptrdiff_t v0, int n, double* rows) {
+            source.fill(source.context, v0, n, rows);
+            return static_cast<const double*>(rows);
+        },
+        output, count, scratch);
 }
 
 }  // namespace morphogen::kernel

@@ -28,6 +28,19 @@ struct Layer {
 void evaluate(const std::vector<Layer>& layers, const double* input, double* output, std::ptrdiff_t count,
               std::vector<double>& scratch);
 
+// Computes the inputs of vertices [first, first + count), count <= block,
+// into `rows` (vertex after vertex) when the kernel reaches them.
+struct InputSource {
+    void (*fill)(const void* context, std::ptrdiff_t first, int count, double* rows) = nullptr;
+    const void* context = nullptr;
+};
+
+// The same, with the inputs made block by block: they stay in the L1 cache
+// instead of streaming a whole-mesh input array (3N doubles per vertex)
+// through memory.
+void evaluate(const std::vector<Layer>& layers, const InputSource& source, double* output, std::ptrdiff_t count,
+              std::vector<double>& scratch);
+
 // The kernel's sigmoid 1 / (1 + e^-a) for one value (no libm call, so loops
 // over it vectorise); exposed for tests.
 double sigmoid_vectorizable(double a);
