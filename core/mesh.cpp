@@ -97,12 +97,6 @@ std::vector<std::string> TriMesh::build_topology() {
     return defects;
 }
 
-Vec3 TriMesh::face_cross(int f) const {
-    const Face& t = faces_[f];
-    const Vec3& a = positions_[t[0]];
-    return (positions_[t[1]] - a).cross(positions_[t[2]] - a);
-}
-
 Vec3 TriMesh::face_centroid(int f) const {
     const Face& t = faces_[f];
     return (positions_[t[0]] + positions_[t[1]] + positions_[t[2]]) / 3.0;

@@ -75,7 +75,11 @@ public:
     int to_vertex(int h) const { return faces_[h / 3][(h % 3 + 1) % 3]; }
 
     // cross(b-a, c-a): twice the area times the unit normal.
-    Vec3 face_cross(int f) const;
+    Vec3 face_cross(int f) const {
+        const Face& t = faces_[f];
+        const Vec3& a = positions_[t[0]];
+        return (positions_[t[1]] - a).cross(positions_[t[2]] - a);
+    }
     double face_area(int f) const { return 0.5 * face_cross(f).norm(); }
     Vec3 face_centroid(int f) const;
 
