@@ -10,10 +10,12 @@ namespace {
 // Mean and population deviation of `count` neighbour rows, channel by channel,
 // in two passes (no cancellation). Local accumulators: they cannot alias the
 // outputs, so the channel loops vectorise without run-time overlap checks.
-template <int N>
+// Only the first D deviations are computed: the last four inputs (the
+// deviations of channels N-4..N-1) are overwritten by direction and height.
+template <int N, int D = N - 4>
 [[gnu::always_inline]] inline void mean_and_deviation(const double* previous, const int* first, const int* last,
                                                       double* mean_out, double* deviation_out) {
-    double mean[N] = {}, deviation[N] = {};
+    double mean[N] = {}, deviation[D] = {};
     const double inverse_count = 1.0 / static_cast<double>(last - first);
     for (const int* u = first; u != last; ++u) {
         const double* wu = previous + static_cast<std::ptrdiff_t>(N) * *u;
@@ -22,15 +24,26 @@ template <int N>
     for (int c = 0; c < N; ++c) mean[c] *= inverse_count;
     for (const int* u = first; u != last; ++u) {
         const double* wu = previous + static_cast<std::ptrdiff_t>(N) * *u;
-        for (int c = 0; c < N; ++c) {
+        for (int c = 0; c < D; ++c) {
             const double d = wu[c] - mean[c];
             deviation[c] += d * d;
         }
     }
-    for (int c = 0; c < N; ++c) {
-        mean_out[c] = mean[c];
-        deviation_out[c] = std::sqrt(deviation[c] * inverse_count);
+    for (int c = 0; c < N; ++c) mean_out[c] = mean[c];
+    for (int c = 0; c < D; ++c) deviation_out[c] = std::sqrt(deviation[c] * inverse_count);
+}
+
+// Copies one row of N doubles with vector moves (GCC would call memcpy).
+template <int N>
+[[gnu::always_inline]] inline void copy_row(const double* from, double* to) {
+    using v4 = double __attribute__((vector_size(32)));
+    int c = 0;
+    for (; c + 4 <= N; c += 4) {
+        v4 v;
+        __builtin_memcpy(&v, from + c, sizeof v);
+        __builtin_memcpy(to + c, &v, sizeof v);
     }
+    for (; c < N; ++c) to[c] = from[c];
 }
 
 // Any N: the same computation with the outputs as accumulators.
@@ -56,7 +69,10 @@ template <int N_FIXED>
     const int N = N_FIXED > 0 ? N_FIXED : in.outputs;
     for (int i = first; i < first + count; ++i) {
         double* own = inputs + static_cast<std::ptrdiff_t>(3 * N) * (i - first);
-        std::copy_n(in.previous + static_cast<std::ptrdiff_t>(N) * i, N, own);
+        if constexpr (N_FIXED > 0)
+            copy_row<N_FIXED>(in.previous + static_cast<std::ptrdiff_t>(N) * i, own);
+        else
+            std::copy_n(in.previous + static_cast<std::ptrdiff_t>(N) * i, N, own);
         const int* first = in.neighbours + in.neighbour_offsets[i];
         const int* last = in.neighbours + in.neighbour_offsets[i + 1];
         if constexpr (N_FIXED > 0)
