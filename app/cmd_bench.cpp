@@ -1,6 +1,7 @@
 // `morphogen bench`: the project's own speed measurement. Grows a fixed set of
-// random genomes once on one thread (with the time split between phases) and
-// once on all threads; prints genomes/s and vertex-steps/s.
+// random genomes on one thread (with the time split between phases) and on
+// all threads, `--repeat` times in alternation; prints the median of each
+// figure (shared machines are noisy: one pass proves little).
 #include "commands.hpp"
 #include "experiment_config.hpp"
 #include "genome_source.hpp"
@@ -9,6 +10,7 @@
 #include <nlohmann/json.hpp>
 #include <omp.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
@@ -20,7 +22,8 @@ namespace {
 
 struct BenchOptions {
     std::string config;
-    int genomes = 16;
+    int genomes = 32;
+    int repeat = 5;
     std::uint64_t seed = 1;
     int threads = 0;
     bool json = false;
@@ -38,6 +41,40 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const std::size_t n = values.size();
+    return n % 2 == 1 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+// One repetition: the timed one-thread pass, then the all-threads pass.
+struct BenchPass {
+    PhaseTimes phases;
+    std::uint64_t vertices_out = 0;
+    double wall_1t = 0, wall_all = 0;
+};
+
+BenchPass run_pass(const std::vector<Network>& networks, const GrowthParams& growth, const Seed& seed, int threads) {
+    BenchPass pass;
+    GrowthWorkspace workspace;
+    auto start = std::chrono::steady_clock::now();
+    for (const Network& network : networks)
+        pass.vertices_out += Grower(network, growth).grow(seed, workspace, &pass.phases).mesh.num_vertices();
+    pass.wall_1t = seconds_since(start);
+
+    // All threads, one genome per thread at a time (as evolution runs).
+    start = std::chrono::steady_clock::now();
+    const int count = static_cast<int>(networks.size());
+#pragma omp parallel num_threads(threads)
+    {
+        GrowthWorkspace local;
+#pragma omp for schedule(dynamic)
+        for (int i = 0; i < count; ++i) Grower(networks[i], growth).grow(seed, local);
+    }
+    pass.wall_all = seconds_since(start);
+    return pass;
+}
+
 int run_bench(const BenchOptions& options) {
     const ExperimentConfig config = load_experiment_config(options.config);
     const std::vector<int> layers = config.network.layers();
@@ -45,68 +82,78 @@ int run_bench(const BenchOptions& options) {
     std::vector<Network> networks;
     for (int i = 0; i < options.genomes; ++i)
         networks.emplace_back(random_genome(layers, config.evolution.init_range, options.seed + i));
-
-    // One thread, phases timed.
-    PhaseTimes phases;
-    GrowthWorkspace workspace;
-    std::uint64_t vertices_out = 0;
-    auto start = std::chrono::steady_clock::now();
-    for (const Network& network : networks)
-        vertices_out += Grower(network, config.growth).grow(seed, workspace, &phases).mesh.num_vertices();
-    const double wall_1t = seconds_since(start);
-
-    // All threads, one genome per thread at a time (as evolution runs).
     const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-    start = std::chrono::steady_clock::now();
-#pragma omp parallel num_threads(threads)
-    {
-        GrowthWorkspace local;
-#pragma omp for schedule(dynamic)
-        for (int i = 0; i < options.genomes; ++i) Grower(networks[i], config.growth).grow(seed, local);
-    }
-    const double wall_all = seconds_since(start);
 
-    const double vs = static_cast<double>(phases.vertex_steps);
+    std::vector<BenchPass> passes;
+    for (int r = 0; r < options.repeat; ++r) passes.push_back(run_pass(networks, config.growth, seed, threads));
+    // Every pass grows the same meshes, so vertex-steps are the same in each.
+    const double vs = static_cast<double>(passes.front().phases.vertex_steps);
+    const auto median_of = [&](auto measure) {
+        std::vector<double> values;
+        for (const BenchPass& pass : passes) values.push_back(measure(pass));
+        return median(values);
+    };
+    const auto range_of = [&](auto measure) {
+        std::vector<double> values;
+        for (const BenchPass& pass : passes) values.push_back(measure(pass));
+        return nlohmann::json::array({*std::min_element(values.begin(), values.end()),
+                                      *std::max_element(values.begin(), values.end())});
+    };
+    const double wall_1t = median_of([](const BenchPass& p) { return p.wall_1t; });
+    const double wall_all = median_of([](const BenchPass& p) { return p.wall_all; });
+    const double think = median_of([](const BenchPass& p) { return p.phases.think; });
+    const auto speedup = [](const BenchPass& p) { return p.wall_1t / p.wall_all; };
+    const auto think_rate = [vs](const BenchPass& p) { return vs / p.phases.think; };
+    const auto rate_1t = [vs](const BenchPass& p) { return vs / p.wall_1t; };
+    const double flop_per_vertex_step = 2.0 * static_cast<double>(parameter_count(layers));
+
     nlohmann::json report{
         {"cpu", cpu_model()},
         {"genomes", options.genomes},
         {"steps", config.growth.steps},
         {"layers", layers},
         {"threads", threads},
-        {"vertex_steps", phases.vertex_steps},
-        {"mean_final_vertices", static_cast<double>(vertices_out) / options.genomes},
+        {"repeat", options.repeat},
+        {"vertex_steps", passes.front().phases.vertex_steps},
+        {"mean_final_vertices", static_cast<double>(passes.front().vertices_out) / options.genomes},
         {"wall_s_1t", wall_1t},
         {"wall_s_all", wall_all},
         {"genomes_per_s_1t", options.genomes / wall_1t},
         {"genomes_per_s_all", options.genomes / wall_all},
-        {"vertex_steps_per_s_1t", vs / wall_1t},
+        {"vertex_steps_per_s_1t", median_of(rate_1t)},
+        {"vertex_steps_per_s_1t_range", range_of(rate_1t)},
         {"vertex_steps_per_s_all", vs / wall_all},
-        {"speedup", wall_1t / wall_all},
-        {"think_s", phases.think},
-        {"gather_s", phases.gather},
-        {"move_s", phases.move},
-        {"split_s", phases.split},
-        {"flip_s", phases.flip},
-        {"think_vertex_steps_per_s", vs / phases.think},
-        {"network_gflops", vs * 2.0 * static_cast<double>(parameter_count(layers)) / phases.think * 1e-9},
+        {"speedup", median_of(speedup)},
+        {"speedup_range", range_of(speedup)},
+        {"think_s", think},
+        {"gather_s", median_of([](const BenchPass& p) { return p.phases.gather; })},
+        {"move_s", median_of([](const BenchPass& p) { return p.phases.move; })},
+        {"split_s", median_of([](const BenchPass& p) { return p.phases.split; })},
+        {"flip_s", median_of([](const BenchPass& p) { return p.phases.flip; })},
+        {"think_vertex_steps_per_s", median_of(think_rate)},
+        {"think_vertex_steps_per_s_range", range_of(think_rate)},
+        {"network_gflops", median_of(think_rate) * flop_per_vertex_step * 1e-9},
     };
     if (options.json) {
         std::printf("%s\n", report.dump(2).c_str());
         return 0;
     }
+    const double gather = report["gather_s"], move = report["move_s"], split = report["split_s"],
+                 flip = report["flip_s"];
+    const double total = think + gather + move + split + flip;
     std::printf("cpu: %s\n", cpu_model().c_str());
-    std::printf("%d genomes x %d steps, layers %s, mean final vertices %.0f\n", options.genomes,
-                config.growth.steps, nlohmann::json(layers).dump().c_str(),
-                static_cast<double>(vertices_out) / options.genomes);
+    std::printf("%d genomes x %d steps, layers %s, mean final vertices %.0f; medians of %d passes\n",
+                options.genomes, config.growth.steps, nlohmann::json(layers).dump().c_str(),
+                report["mean_final_vertices"].get<double>(), options.repeat);
     std::printf("1 thread : %8.3f s  %7.2f genomes/s  %6.2f M vertex-steps/s\n", wall_1t, options.genomes / wall_1t,
-                vs / wall_1t * 1e-6);
-    std::printf("%d threads: %8.3f s  %7.2f genomes/s  %6.2f M vertex-steps/s  (x%.2f)\n", threads, wall_all,
-                options.genomes / wall_all, vs / wall_all * 1e-6, wall_1t / wall_all);
+                report["vertex_steps_per_s_1t"].get<double>() * 1e-6);
+    std::printf("%d threads: %8.3f s  %7.2f genomes/s  %6.2f M vertex-steps/s  (x%.2f, range %.2f-%.2f)\n", threads,
+                wall_all, options.genomes / wall_all, vs / wall_all * 1e-6, report["speedup"].get<double>(),
+                report["speedup_range"][0].get<double>(), report["speedup_range"][1].get<double>());
     std::printf("phases (1 thread): think %.1f%%  gather %.1f%%  move %.1f%%  split %.1f%%  flip %.1f%%\n",
-                100 * phases.think / phases.total(), 100 * phases.gather / phases.total(),
-                100 * phases.move / phases.total(), 100 * phases.split / phases.total(),
-                100 * phases.flip / phases.total());
-    std::printf("think: %.2f M vertex-steps/s (%.1f GFLOP/s)\n", vs / phases.think * 1e-6,
+                100 * think / total, 100 * gather / total, 100 * move / total, 100 * split / total,
+                100 * flip / total);
+    std::printf("think: %.2f M vertex-steps/s (%.1f GFLOP/s)\n", report["think_vertex_steps_per_s"].get<double>() * 1e-6,
                 report["network_gflops"].get<double>());
     return 0;
 }
@@ -118,7 +165,9 @@ void add_bench_command(CLI::App& root, CommandRunner& selected) {
     CLI::App* cmd = root.add_subcommand("bench", "Measure growth speed (1 thread and all threads)");
     cmd->add_option("--config", options->config, "Experiment config (JSON); defaults if omitted")
         ->check(CLI::ExistingFile);
-    cmd->add_option("--genomes", options->genomes, "Number of random genomes to grow")->check(CLI::Range(1, 100000));
+    cmd->add_option("--genomes", options->genomes, "Number of random genomes to grow (default 32: one evolution batch)")
+        ->check(CLI::Range(1, 100000));
+    cmd->add_option("--repeat", options->repeat, "Passes to take medians over (default 5)")->check(CLI::Range(1, 1000));
     cmd->add_option("--seed", options->seed, "Seed of the first genome");
     cmd->add_option("--threads", options->threads, "Threads of the parallel pass (0 = all cores)")
         ->check(CLI::Range(0, 4096));
