@@ -4,6 +4,7 @@
 // figure (shared machines are noisy: one pass proves little).
 #include "commands.hpp"
 #include "experiment_config.hpp"
+#include "fma_peak.hpp"
 #include "genome_source.hpp"
 #include "growth.hpp"
 
@@ -85,7 +86,12 @@ int run_bench(const BenchOptions& options) {
     const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
 
     std::vector<BenchPass> passes;
-    for (int r = 0; r < options.repeat; ++r) passes.push_back(run_pass(networks, config.growth, seed, threads));
+    std::vector<double> peaks;  // measured between passes: the machine's speed drifts
+    for (int r = 0; r < options.repeat; ++r) {
+        peaks.push_back(measure_fma_peak(0.05));
+        passes.push_back(run_pass(networks, config.growth, seed, threads));
+    }
+    const double peak = median(peaks);
     // Every pass grows the same meshes, so vertex-steps are the same in each.
     const double vs = static_cast<double>(passes.front().phases.vertex_steps);
     const auto median_of = [&](auto measure) {
@@ -133,6 +139,10 @@ int run_bench(const BenchOptions& options) {
         {"think_vertex_steps_per_s", median_of(think_rate)},
         {"think_vertex_steps_per_s_range", range_of(think_rate)},
         {"network_gflops", median_of(think_rate) * flop_per_vertex_step * 1e-9},
+        {"fma_peak_gflops", peak * 1e-9},
+        {"network_bound_vertex_steps_per_s", peak / flop_per_vertex_step},
+        {"think_fraction_of_bound", median_of(think_rate) * flop_per_vertex_step / peak},
+        {"growth_fraction_of_bound", median_of(rate_1t) * flop_per_vertex_step / peak},
     };
     if (options.json) {
         std::printf("%s\n", report.dump(2).c_str());
@@ -155,6 +165,10 @@ int run_bench(const BenchOptions& options) {
                 100 * flip / total);
     std::printf("think: %.2f M vertex-steps/s (%.1f GFLOP/s)\n", report["think_vertex_steps_per_s"].get<double>() * 1e-6,
                 report["network_gflops"].get<double>());
+    std::printf("FMA peak now: %.1f GFLOP/s, so the network bounds growth at %.2f M vertex-steps/s; "
+                "think reaches %.0f%% of it, whole growth %.0f%%\n",
+                peak * 1e-9, peak / flop_per_vertex_step * 1e-6, 100 * report["think_fraction_of_bound"].get<double>(),
+                100 * report["growth_fraction_of_bound"].get<double>());
     return 0;
 }
 
