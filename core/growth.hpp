@@ -63,8 +63,9 @@ public:
 private:
     // The neighbour lists (CSR) of the mesh as it stands.
     void build_neighbours(const TriMesh& mesh, GrowthWorkspace& workspace) const;
-    // Gather (§3) and network (§4.1): new outputs for every vertex.
-    void think(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times) const;
+    // Gather (§3) and network (§4.1): new outputs for every vertex. When
+    // timed, returns the gather's share of the time (else 0).
+    double think(GrowthState& state, GrowthWorkspace& workspace, bool timed) const;
     void move(GrowthState& state) const;
     void split(GrowthState& state) const;
     void flip(GrowthState& state) const;
