@@ -156,21 +156,28 @@ void Grower::move(GrowthState& state) const {
         for (Vec3& p : x) p.z() = std::max(p.z(), 0.0);
 }
 
-void Grower::split(GrowthState& state) const {
+void Grower::split(GrowthState& state, GrowthWorkspace& workspace) const {
     TriMesh& mesh = state.mesh;
     const int N = state.outputs_per_vertex;
     const int F0 = mesh.num_faces();
     std::vector<double>& outputs = state.outputs;
+    // Each vertex's w[1] in a compact array: the face loop reads it three times
+    // per face from scattered vertices, and a whole output row per read would
+    // pull N doubles into the cache for one. Only vertices older than this
+    // phase are read (appended faces are not visited).
+    std::vector<double>& w1 = workspace.split_w1;
+    w1.resize(static_cast<std::size_t>(mesh.num_vertices()));
+    for (std::size_t i = 0; i < w1.size(); ++i) w1[i] = outputs[i * N + 1];
     for (int f = 0; f < F0; ++f) {
         if (mesh.num_vertices() >= params_.max_vertices) break;
         const auto [a, b, c] = mesh.face(f);
+        const Vec3 cross = mesh.face_cross(f);
+        const double twice_area = cross.norm();
+        if (!(0.5 * twice_area > params_.split_area * (0.5 + (w1[a] + w1[b] + w1[c]) / 3.0))) continue;
+
         const double* wa = outputs.data() + static_cast<std::ptrdiff_t>(N) * a;
         const double* wb = outputs.data() + static_cast<std::ptrdiff_t>(N) * b;
         const double* wc = outputs.data() + static_cast<std::ptrdiff_t>(N) * c;
-        const Vec3 cross = mesh.face_cross(f);
-        const double twice_area = cross.norm();
-        if (!(0.5 * twice_area > params_.split_area * (0.5 + (wa[1] + wb[1] + wc[1]) / 3.0))) continue;
-
         const Vec3 normal = cross / twice_area;
         const std::vector<Vec3>& h = state.directions;
         const Vec3 sum = normal + wa[2] * h[a] + wb[2] * h[b] + wc[2] * h[c];
@@ -210,7 +217,7 @@ void Grower::step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* ti
     }
     move(state);
     clock.lap(&PhaseTimes::move);
-    split(state);
+    split(state, workspace);
     clock.lap(&PhaseTimes::split);
     if ((t + 1) % params_.flip_every == 0) flip(state);
     clock.lap(&PhaseTimes::flip);

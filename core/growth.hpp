@@ -41,6 +41,7 @@ struct GrowthWorkspace {
     // not reallocate (and page-fault) fresh buffers.
     std::vector<double> next_outputs;  // N per vertex
     std::vector<int> neighbour_offsets, neighbours, cursor;  // CSR neighbour lists
+    std::vector<double> split_w1;                            // w[1] of each vertex
     NetworkWorkspace network;
 };
 
@@ -67,7 +68,7 @@ private:
     // timed, returns the gather's share of the time (else 0).
     double think(GrowthState& state, GrowthWorkspace& workspace, bool timed) const;
     void move(GrowthState& state) const;
-    void split(GrowthState& state) const;
+    void split(GrowthState& state, GrowthWorkspace& workspace) const;
     void flip(GrowthState& state) const;
 
     const Network& network_;
