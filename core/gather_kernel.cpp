@@ -73,12 +73,12 @@ template <int N_FIXED>
             copy_row<N_FIXED>(in.previous + static_cast<std::ptrdiff_t>(N) * i, own);
         else
             std::copy_n(in.previous + static_cast<std::ptrdiff_t>(N) * i, N, own);
-        const int* first = in.neighbours + in.neighbour_offsets[i];
-        const int* last = in.neighbours + in.neighbour_offsets[i + 1];
+        const int* neighbours_begin = in.neighbours + in.neighbour_offsets[i];
+        const int* neighbours_end = in.neighbours + in.neighbour_offsets[i + 1];
         if constexpr (N_FIXED > 0)
-            mean_and_deviation<N_FIXED>(in.previous, first, last, own + N, own + 2 * N);
+            mean_and_deviation<N_FIXED>(in.previous, neighbours_begin, neighbours_end, own + N, own + 2 * N);
         else
-            mean_and_deviation(N, in.previous, first, last, own + N, own + 2 * N);
+            mean_and_deviation(N, in.previous, neighbours_begin, neighbours_end, own + N, own + 2 * N);
 
         const Eigen::Vector3d& h = in.directions[i];
         own[3 * N - 4] = 0.5 + 0.5 * h.x();

@@ -9,7 +9,6 @@ namespace morphogen::kernel {
 
 struct GatherInput {
     int outputs = 0;                    // N
-    int vertices = 0;                   // V
     const double* previous = nullptr;   // N x V, vertex after vertex
     const int* neighbour_offsets = nullptr;  // V + 1 offsets into neighbours (CSR)
     const int* neighbours = nullptr;

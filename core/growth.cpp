@@ -126,7 +126,6 @@ double Grower::think(GrowthState& state, GrowthWorkspace& workspace, bool timed)
     gather.timed = timed;
     kernel::GatherInput& in = gather.input;
     in.outputs = network_.outputs();
-    in.vertices = mesh.num_vertices();
     in.previous = state.outputs.data();
     in.neighbour_offsets = workspace.neighbour_offsets.data();
     in.neighbours = workspace.neighbours.data();
