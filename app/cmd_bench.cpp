@@ -94,16 +94,15 @@ int run_bench(const BenchOptions& options) {
     const double peak = median(peaks);
     // Every pass grows the same meshes, so vertex-steps are the same in each.
     const double vs = static_cast<double>(passes.front().phases.vertex_steps);
-    const auto median_of = [&](auto measure) {
+    const auto values_of = [&](auto measure) {
         std::vector<double> values;
         for (const BenchPass& pass : passes) values.push_back(measure(pass));
-        return median(values);
+        return values;
     };
+    const auto median_of = [&](auto measure) { return median(values_of(measure)); };
     const auto range_of = [&](auto measure) {
-        std::vector<double> values;
-        for (const BenchPass& pass : passes) values.push_back(measure(pass));
-        return nlohmann::json::array({*std::min_element(values.begin(), values.end()),
-                                      *std::max_element(values.begin(), values.end())});
+        const auto [low, high] = std::ranges::minmax(values_of(measure));
+        return nlohmann::json::array({low, high});
     };
     const double wall_1t = median_of([](const BenchPass& p) { return p.wall_1t; });
     const double wall_all = median_of([](const BenchPass& p) { return p.wall_all; });
