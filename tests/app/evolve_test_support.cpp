@@ -13,17 +13,6 @@
 
 namespace morphogen::test {
 
-TempDir::TempDir(const std::string& name)
-    : path(fs::temp_directory_path() / ("morphogen-test-" + name + "-" + std::to_string(::getpid()))) {
-    fs::remove_all(path);
-    fs::create_directories(path);
-}
-
-TempDir::~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-}
-
 std::string read_text(const fs::path& path) {
     std::ifstream in(path, std::ios::binary);
     std::ostringstream s;

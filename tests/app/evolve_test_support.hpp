@@ -1,6 +1,8 @@
 #pragma once
 // Helpers for the evolve/resume tests: temporary run directories, running the
 // morphogen executable, and comparing run files while ignoring timings.
+#include "support/temp_dir.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
@@ -10,14 +12,7 @@ namespace morphogen::test {
 
 namespace fs = std::filesystem;
 
-// A fresh empty directory under the system temp dir, removed by the destructor.
-struct TempDir {
-    explicit TempDir(const std::string& name);
-    ~TempDir();
-    TempDir(const TempDir&) = delete;
-    TempDir& operator=(const TempDir&) = delete;
-    fs::path path;
-};
+using morphogen::testing::TempDir;
 
 struct CliResult {
     int code = -1;       // exit status (128 + signal if killed)

@@ -350,7 +350,7 @@ TEST_CASE("every malformed file gives an IoError naming the file and the problem
         "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
 
     require_read_error(tmp.file("missing.obj"), "cannot open");
-    require_read_error(tmp.dir.string() + "/.obj", "");
+    require_read_error(tmp.path.string() + "/.obj", "");
     fs::create_directories(tmp.file("dir.obj"));
     require_read_error(tmp.file("dir.obj"), "directory");
     require_read_error(tmp.write("x.stl", ""), "not supported");

@@ -1,6 +1,7 @@
 #include "errors.hpp"
 #include "genome_io.hpp"
 #include "network.hpp"
+#include "support/temp_dir.hpp"
 #include "support/test_meshes.hpp"
 
 #include <catch2/catch.hpp>
@@ -66,12 +67,13 @@ TEST_CASE("a network refuses a genome that does not fit its layers", "[network]"
 }
 
 TEST_CASE("genome files round-trip exactly", "[network][io]") {
+    const TempDir tmp("genome");
     for (std::uint64_t seed = 1; seed <= 20; ++seed) {
         Genome genome = random_test_genome({45, 30, 15}, seed, 1e3);
         genome.params[0] = 1e-310;  // subnormal
         genome.params[1] = -0.1;
         genome.params[2] = 1.0 / 3.0;
-        const std::string path = temp_path("genome-" + std::to_string(seed) + ".json");
+        const std::string path = tmp.file("genome-" + std::to_string(seed) + ".json");
         save_genome(genome, path);
         const Genome back = load_genome(path);
         CHECK(back.layers == genome.layers);
@@ -81,7 +83,8 @@ TEST_CASE("genome files round-trip exactly", "[network][io]") {
 }
 
 TEST_CASE("bad genome files are refused with the file and the reason", "[network][io]") {
-    const std::string path = temp_path("bad-genome.json");
+    const TempDir tmp("genome");
+    const std::string path = tmp.file("bad-genome.json");
     auto refused = [&](const std::string& text, const std::string& reason) {
         write_text(path, text);
         CHECK_THROWS_WITH(load_genome(path), Catch::Contains(path) && Catch::Contains(reason));
@@ -94,5 +97,5 @@ TEST_CASE("bad genome files are refused with the file and the reason", "[network
     refused("{\"format\": \"morphogen-genome\", \"version\": 1, \"layers\": [2,0], \"params\": []}", "layer size 0");
     refused("{\"format\": \"morphogen-genome\", \"version\": 1,\n \"layers\": [2,1] \"params\": [1,2,3]}", "line 2");
     refused("[]", "object");
-    CHECK_THROWS_WITH(load_genome(temp_path("does-not-exist.json")), Catch::Contains("cannot open"));
+    CHECK_THROWS_WITH(load_genome(tmp.file("does-not-exist.json")), Catch::Contains("cannot open"));
 }

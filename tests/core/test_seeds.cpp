@@ -1,5 +1,6 @@
 #include "errors.hpp"
 #include "seeds.hpp"
+#include "support/temp_dir.hpp"
 #include "support/test_meshes.hpp"
 
 #include <catch2/catch.hpp>
@@ -60,17 +61,18 @@ TEST_CASE("built-in seed order is pinned", "[seeds]") {
 }
 
 TEST_CASE("seed files: accepted when closed and outward, refused clearly otherwise", "[seeds]") {
+    const TempDir tmp("seeds");
     const std::string cube_vertices =
         "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n";
     const std::string cube_faces =
         "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n";
-    const std::string good = temp_path("seed-cube.obj");
+    const std::string good = tmp.file("seed-cube.obj");
     write_text(good, cube_vertices + cube_faces);
     const Seed seed = make_seed(good, 123.0);  // radius is ignored for files
     CHECK(seed.mesh.num_vertices() == 8);
     CHECK(seed.mesh.position(6) == Vec3(1, 1, 1));
 
-    const std::string open = temp_path("seed-open.obj");
+    const std::string open = tmp.file("seed-open.obj");
     write_text(open, cube_vertices + cube_faces.substr(0, cube_faces.rfind("f 4 5 8")));
     CHECK_THROWS_WITH(make_seed(open, 1), Catch::Contains(open) && Catch::Contains("open"));
 
@@ -82,16 +84,16 @@ TEST_CASE("seed files: accepted when closed and outward, refused clearly otherwi
         inward_faces += "f " + std::to_string(a) + " " + std::to_string(c) + " " + std::to_string(b) + "\n";
         i = end + 1;
     }
-    const std::string inward = temp_path("seed-inward.obj");
+    const std::string inward = tmp.file("seed-inward.obj");
     write_text(inward, cube_vertices + inward_faces);
     CHECK_THROWS_WITH(make_seed(inward, 1), Catch::Contains(inward) && Catch::Contains("inward"));
 
-    const std::string nonmanifold = temp_path("seed-nonmanifold.obj");
+    const std::string nonmanifold = tmp.file("seed-nonmanifold.obj");
     write_text(nonmanifold, cube_vertices + cube_faces + "f 1 2 3\n");
     CHECK_THROWS_WITH(make_seed(nonmanifold, 1), Catch::Contains(nonmanifold));
 
-    CHECK_THROWS_WITH(make_seed(temp_path("no-such-seed.obj"), 1), Catch::Contains("no-such-seed.obj"));
-    const std::string garbage = temp_path("seed-garbage.obj");
+    CHECK_THROWS_WITH(make_seed(tmp.file("no-such-seed.obj"), 1), Catch::Contains("no-such-seed.obj"));
+    const std::string garbage = tmp.file("seed-garbage.obj");
     write_text(garbage, "v 0 0 zero\n");
     CHECK_THROWS_WITH(make_seed(garbage, 1), Catch::Contains(garbage));
 }

@@ -3,6 +3,7 @@
 #include "growth_params.hpp"
 #include "mesh_builders.hpp"
 #include "mesh_io.hpp"
+#include "support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -12,7 +13,6 @@
 #include <fstream>
 #include <random>
 #include <sys/wait.h>
-#include <unistd.h>
 
 using namespace morphogen;
 using nlohmann::json;
@@ -35,15 +35,11 @@ Result morphogen_run(const std::string& arguments) {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
 }
 
-std::filesystem::path scratch_dir() {
-    const auto dir = std::filesystem::temp_directory_path() / ("morphogen_score_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir);
-    return dir;
-}
 }  // namespace
 
 TEST_CASE("score --mesh prints the fitness and every metric", "[fitness][cli]") {
-    const auto dir = scratch_dir();
+    const testing::TempDir tmp("score");
+    const auto& dir = tmp.path;
     const std::string box = (dir / "box.obj").string();
     write_mesh(test::make_box({0, 0, 0}, {1, 1, 11}).view(), box);
 
@@ -98,7 +94,8 @@ TEST_CASE("score --mesh prints the fitness and every metric", "[fitness][cli]") 
 }
 
 TEST_CASE("score reports usage and config errors", "[fitness][cli]") {
-    const auto dir = scratch_dir();
+    const testing::TempDir tmp("score");
+    const auto& dir = tmp.path;
     const std::string box = (dir / "box.obj").string();
     write_mesh(test::make_box({0, 0, 0}, {1, 1, 11}).view(), box);
     CHECK(morphogen_run("score").code == 2);
@@ -114,7 +111,8 @@ TEST_CASE("score reports usage and config errors", "[fitness][cli]") {
 }
 
 TEST_CASE("score --genome grows the genome and scores the mesh", "[fitness][cli]") {
-    const auto dir = scratch_dir();
+    const testing::TempDir tmp("score");
+    const auto& dir = tmp.path;
     const std::string config = (dir / "config.json").string();
     std::ofstream(config) << R"({"growth": {"steps": 30}, "fitness": {"type": "height"}})";
     NetworkParams network;

@@ -33,10 +33,6 @@ inline Genome random_test_genome(const std::vector<int>& layers, std::uint64_t s
     return Genome{layers, random_parameters(parameter_count(layers), range, stream)};
 }
 
-inline std::string temp_path(const std::string& name) {
-    return (std::string("/tmp/morphogen-test-") + name);
-}
-
 inline void write_text(const std::string& path, const std::string& text) {
     std::ofstream out(path, std::ios::binary | std::ios::trunc);
     out << text;
