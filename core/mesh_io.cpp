@@ -109,12 +109,12 @@ std::string header_comment(MeshView mesh) {
            std::to_string(mesh.faces.size()) + " triangles, Z up";
 }
 
-std::string obj_bytes(MeshView mesh) {
-    std::string out;
-    out.reserve(64 + mesh.positions.size() * 60 + mesh.faces.size() * 24);
-    out += "# " + header_comment(mesh) + "\n";
+// The text formats share their body: one line per vertex ("<prefix>x y z")
+// and one per face ("<prefix>i j k", indices from `first_index`).
+void append_text_body(std::string& out, MeshView mesh, std::string_view vertex_prefix, std::string_view face_prefix,
+                      long long first_index) {
     for (const Vec3& p : mesh.positions) {
-        out += "v ";
+        out += vertex_prefix;
         append_double(out, p.x());
         out += ' ';
         append_double(out, p.y());
@@ -123,40 +123,34 @@ std::string obj_bytes(MeshView mesh) {
         out += '\n';
     }
     for (const Face& f : mesh.faces) {
-        out += 'f';
+        out += face_prefix;
         for (int v : f) {
             out += ' ';
-            append_int(out, v + 1LL);
+            append_int(out, v + first_index);
         }
         out += '\n';
     }
+}
+
+std::size_t text_size_guess(MeshView mesh) { return 64 + mesh.positions.size() * 60 + mesh.faces.size() * 24; }
+
+std::string obj_bytes(MeshView mesh) {
+    std::string out;
+    out.reserve(text_size_guess(mesh));
+    out += "# " + header_comment(mesh) + "\n";
+    append_text_body(out, mesh, "v ", "f", 1);
     return out;
 }
 
 std::string off_bytes(MeshView mesh) {
     std::string out;
-    out.reserve(64 + mesh.positions.size() * 60 + mesh.faces.size() * 24);
+    out.reserve(text_size_guess(mesh));
     out += "OFF\n# " + header_comment(mesh) + "\n";
     append_int(out, static_cast<long long>(mesh.positions.size()));
     out += ' ';
     append_int(out, static_cast<long long>(mesh.faces.size()));
     out += " 0\n";
-    for (const Vec3& p : mesh.positions) {
-        append_double(out, p.x());
-        out += ' ';
-        append_double(out, p.y());
-        out += ' ';
-        append_double(out, p.z());
-        out += '\n';
-    }
-    for (const Face& f : mesh.faces) {
-        out += '3';
-        for (int v : f) {
-            out += ' ';
-            append_int(out, v);
-        }
-        out += '\n';
-    }
+    append_text_body(out, mesh, "", "3", 0);
     return out;
 }
 
