@@ -1,6 +1,7 @@
 #pragma once
-// Helpers for the evolve/resume tests: temporary run directories, running the
-// morphogen executable, and comparing run files while ignoring timings.
+// Helpers for the evolve/resume tests: running the morphogen executable and
+// comparing run files while ignoring timings (files and temporary directories
+// come from support/temp_dir.hpp).
 #include "support/temp_dir.hpp"
 
 #include <nlohmann/json.hpp>
@@ -12,7 +13,9 @@ namespace morphogen::test {
 
 namespace fs = std::filesystem;
 
+using morphogen::testing::read_text;
 using morphogen::testing::TempDir;
+using morphogen::testing::write_text;
 
 struct CliResult {
     int code = -1;       // exit status (128 + signal if killed)
@@ -27,8 +30,6 @@ int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log);
 // Waits for a spawned process; returns its exit status (128 + signal if killed).
 int wait_for(int pid);
 
-std::string read_text(const fs::path& path);
-void write_text(const fs::path& path, const std::string& text);
 
 // A config small enough for a run to take milliseconds.
 std::string tiny_config(int generations, int population = 8, int batch = 3);

@@ -4,7 +4,6 @@
 #include "network.hpp"
 #include "rng.hpp"
 
-#include <fstream>
 #include <string>
 #include <utility>
 
@@ -31,11 +30,6 @@ inline std::pair<int, int> find_half_edge(const TriMesh& mesh, int from, int to)
 inline Genome random_test_genome(const std::vector<int>& layers, std::uint64_t seed, double range = 2.0) {
     RandomStream stream(seed, 0);
     return Genome{layers, random_parameters(parameter_count(layers), range, stream)};
-}
-
-inline void write_text(const std::string& path, const std::string& text) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    out << text;
 }
 
 }  // namespace morphogen::testing
