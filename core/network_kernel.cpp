@@ -85,7 +85,7 @@ template <int G>
 #pragma GCC diagnostic pop
 
 // One layer for one block: the products in groups of at most 6 neurons, as
-// even as possible (15 = 5+5+5, 30 = 6*5: a lone remainder neuron would leave
+// even as possible (15 = 5+5+5, 30 = 6+6+6+6+6: a lone remainder neuron would leave
 // the FMA units waiting on latency), then the sigmoid over the whole layer in
 // one loop, its constants held in registers.
 [[gnu::always_inline]] inline void dense_sigmoid(const Layer& layer, const double* in, double* out) {
