@@ -1,19 +1,13 @@
 #include "gather_kernel.hpp"
 
+#include "vector4.hpp"
+
 #include <algorithm>
 #include <cmath>
 
 namespace morphogen::kernel {
 
 namespace {
-
-using v4 = double __attribute__((vector_size(32)));
-[[gnu::always_inline]] inline v4 load4(const double* p) {
-    v4 v;
-    __builtin_memcpy(&v, p, sizeof v);
-    return v;
-}
-[[gnu::always_inline]] inline void store4(double* p, v4 v) { __builtin_memcpy(p, &v, sizeof v); }
 
 // Mean and population deviation of the neighbour rows [first, last), channel
 // by channel, in two passes (no cancellation), four channels at a time in
@@ -32,34 +26,34 @@ template <int N>
     v4 mean[mean_chunks] = {};
     for (const int* u = first; u != last; ++u) {
         const double* wu = previous + static_cast<std::ptrdiff_t>(N) * *u;
-        for (int i = 0; i < mean_chunks; ++i) mean[i] += load4(wu + mean_at(i));
+        for (int i = 0; i < mean_chunks; ++i) mean[i] += load(wu + mean_at(i));
     }
     const double inverse_count = 1.0 / static_cast<double>(last - first);
     for (int i = 0; i < mean_chunks; ++i) {
         mean[i] *= inverse_count;
-        store4(mean_out + mean_at(i), mean[i]);
+        store(mean_out + mean_at(i), mean[i]);
     }
     // Deviation chunk i is channels 4i..4i+3, the same as mean chunk i.
     v4 squares[deviation_chunks] = {};
     for (const int* u = first; u != last; ++u) {
         const double* wu = previous + static_cast<std::ptrdiff_t>(N) * *u;
         for (int i = 0; i < deviation_chunks; ++i) {
-            const v4 d = load4(wu + 4 * i) - mean[i];
+            const v4 d = load(wu + 4 * i) - mean[i];
             squares[i] += d * d;
         }
     }
     // The square roots from an array: GCC turns this loop into vsqrtpd.
     double deviation[4 * deviation_chunks];
-    for (int i = 0; i < deviation_chunks; ++i) store4(deviation + 4 * i, squares[i] * inverse_count);
+    for (int i = 0; i < deviation_chunks; ++i) store(deviation + 4 * i, squares[i] * inverse_count);
     for (double& d : deviation) d = std::sqrt(d);
-    for (int i = 0; i < deviation_chunks; ++i) store4(deviation_out + 4 * i, load4(deviation + 4 * i));
+    for (int i = 0; i < deviation_chunks; ++i) store(deviation_out + 4 * i, load(deviation + 4 * i));
 }
 
 // Copies one row of N doubles with vector moves (GCC would call memcpy).
 template <int N>
 [[gnu::always_inline]] inline void copy_row(const double* from, double* to) {
     int c = 0;
-    for (; c + 4 <= N; c += 4) store4(to + c, load4(from + c));
+    for (; c + 4 <= N; c += 4) store(to + c, load(from + c));
     for (; c < N; ++c) to[c] = from[c];
 }
 

@@ -1,5 +1,7 @@
 #include "network_kernel.hpp"
 
+#include "vector4.hpp"
+
 #include <algorithm>
 #include <bit>
 #include <cstdint>
@@ -8,20 +10,10 @@ namespace morphogen::kernel {
 
 namespace {
 
-// Four doubles: one AVX2 register (two SSE2 registers in the baseline clone).
-using v4 = double __attribute__((vector_size(32)));
-using u4 = std::uint64_t __attribute__((vector_size(32)));
-constexpr int lanes = 4;
 static_assert(block % lanes == 0);
 
 // Broadcasts are written as scalar * vector (never v4{x,x,x,x}): GCC 12 turns
 // the latter, inlined into the AVX2 clone, into two instructions.
-[[gnu::always_inline]] inline v4 load(const double* p) {
-    v4 v;
-    __builtin_memcpy(&v, p, sizeof v);
-    return v;
-}
-[[gnu::always_inline]] inline void store(double* p, v4 v) { __builtin_memcpy(p, &v, sizeof v); }
 
 // sigmoid(a) = 1 / (1 + e^-a) in one division. Cody-Waite reduction
 // -a = n ln2 + r (|r| <= ln2/2); with s = -r = a + n ln2, Cephes' Pade form
@@ -31,8 +23,9 @@ static_assert(block % lanes == 0);
 // hold n + 1023 as an integer (AVX2 has no double->int64 conversion): shifted
 // left by 52 they are the exponent bits of 2^n. p = s + s^3 P'(s^2), as
 // Cephes' leading coefficient rounds to exactly 1. Both save an operation and
-// a constant over the textbook form (kernel_ab: about 3 % faster). a is clamped to [-700, 700], where 2^n (q - p) stays finite:
-// beyond it the sigmoid differs from the exact one by less than 1e-304. The
+// a constant over the textbook form (kernel_ab: about 3 % faster).
+// a is clamped to [-700, 700], where 2^n (q - p) stays finite: beyond it
+// the sigmoid differs from the exact one by less than 1e-304. The
 // clamps compile to vmaxpd/vminpd because this file is built with
 // -ffinite-math-only (nothing here is NaN or infinite: the genome and the
 // inputs are checked finite). n ln2 is one FMA with ln2 rounded to a double:
@@ -93,7 +86,7 @@ template <int G>
 // One layer for one block: the products in groups of at most 6 neurons, as
 // even as possible (15 = 5+5+5, 30 = 6+6+6+6+6: a lone remainder neuron would leave
 // the FMA units waiting on latency), then the sigmoid over the whole layer in
-// one loop, its constants held in registers.
+// one loop.
 [[gnu::always_inline]] inline void dense_sigmoid(const Layer& layer, const double* in, double* out) {
     constexpr int max_group = 6;
     const int O = layer.outputs;

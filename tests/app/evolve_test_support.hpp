@@ -30,7 +30,6 @@ int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log);
 // Waits for a spawned process; returns its exit status (128 + signal if killed).
 int wait_for(int pid);
 
-
 // A config small enough for a run to take milliseconds.
 std::string tiny_config(int generations, int population = 8, int batch = 3);
 
