@@ -89,32 +89,75 @@ void Grower::build_neighbours(const TriMesh& mesh, GrowthWorkspace& workspace) c
 
 namespace {
 
-// A cheap tick counter to split the fused gather+network time: the gather
-// runs once per block of 8 vertices, too often for clock_gettime (~20 ns).
+// A tick counter to split the fused gather+network time: the gather runs
+// once per block of 8 vertices, too often for clock_gettime. Fenced on both
+// sides: a bare rdtsc may execute before the code ahead of it has finished,
+// or after code behind it has started, so an interval would take in part of
+// its neighbours' work (here, the kernel's).
 std::uint64_t ticks() {
 #if defined(__x86_64__) || defined(__i386__)
-    return __rdtsc();
+    _mm_lfence();
+    const std::uint64_t t = __rdtsc();
+    _mm_lfence();
+    return t;
 #else
     return static_cast<std::uint64_t>(Clock::now().time_since_epoch().count());
 #endif
 }
 
+// What a pair of back-to-back ticks() reads on top of the code between them
+// (the smallest of 64 tries; 49 ticks = 20 ns on the development VM): a
+// timed interval is that much too long.
+std::uint64_t tick_overhead() {
+    static const std::uint64_t overhead = [] {
+        std::uint64_t least = ~std::uint64_t{0};
+        for (int i = 0; i < 64; ++i) {
+            const std::uint64_t a = ticks();
+            least = std::min(least, ticks() - a);
+        }
+        return least;
+    }();
+    return overhead;
+}
+
 // What the network's input source needs: the gather of §3 for a block of
-// vertices, and (when timing) the ticks it took.
+// vertices, and (when timing) an estimate of the ticks it took. Only one
+// block in `sample_every` is timed: a fenced read costs about 27 ns here and
+// drains the pipeline, and two per block of 8 vertices would slow the timed
+// pass itself. The timed blocks' ticks, less the reads' own overhead, are
+// scaled up to all blocks. The sampling phase runs on across calls and
+// genomes (per thread), so the timed blocks rotate.
 struct BlockGather {
+    static constexpr std::uint64_t sample_every = 8;
     kernel::GatherInput input;
     bool timed = false;
-    mutable std::uint64_t gather_ticks = 0;
+    mutable std::uint64_t gather_ticks = 0, blocks = 0, timed_blocks = 0;
 
     static void fill(const void* context, std::ptrdiff_t first, int count, double* rows) {
+        thread_local std::uint64_t phase = 0;
         const auto& self = *static_cast<const BlockGather*>(context);
         if (!self.timed) {
             kernel::gather_inputs(self.input, static_cast<int>(first), count, rows);
             return;
         }
+        ++self.blocks;
+        if (phase++ % sample_every != 0) {
+            kernel::gather_inputs(self.input, static_cast<int>(first), count, rows);
+            return;
+        }
         const std::uint64_t start = ticks();
         kernel::gather_inputs(self.input, static_cast<int>(first), count, rows);
-        self.gather_ticks += ticks() - start;
+        const std::uint64_t elapsed = ticks() - start, overhead = tick_overhead();
+        self.gather_ticks += elapsed > overhead ? elapsed - overhead : 0;
+        ++self.timed_blocks;
+    }
+
+    // The estimated share of `total` ticks spent gathering.
+    double share_of(std::uint64_t total) const {
+        if (total == 0 || timed_blocks == 0) return 0.0;
+        const double estimate = static_cast<double>(gather_ticks) * static_cast<double>(blocks) /
+                                static_cast<double>(timed_blocks);
+        return std::min(1.0, estimate / static_cast<double>(total));
     }
 };
 
@@ -133,11 +176,12 @@ double Grower::think(GrowthState& state, GrowthWorkspace& workspace, bool timed)
     in.positions = mesh.positions().data();
     in.height_scale = params_.height_scale;
     workspace.next_outputs.resize(static_cast<std::size_t>(network_.outputs()) * mesh.num_vertices());
+    if (timed) tick_overhead();  // calibrated once, outside the timed interval
     const std::uint64_t start = timed ? ticks() : 0;
     network_.evaluate(kernel::InputSource{&BlockGather::fill, &gather}, workspace.next_outputs, workspace.network);
     const std::uint64_t total = timed ? ticks() - start : 0;
     state.outputs.swap(workspace.next_outputs);
-    return total > 0 ? static_cast<double>(gather.gather_ticks) / static_cast<double>(total) : 0.0;
+    return gather.share_of(total);
 }
 
 void Grower::move(GrowthState& state) const {

@@ -65,7 +65,8 @@ private:
     // The neighbour lists (CSR) of the mesh as it stands.
     void build_neighbours(const TriMesh& mesh, GrowthWorkspace& workspace) const;
     // Gather (§3) and network (§4.1): new outputs for every vertex. When
-    // timed, returns the gather's share of the time (else 0).
+    // timed, returns the gather's share of the time, estimated from a
+    // sample of its blocks (else 0).
     double think(GrowthState& state, GrowthWorkspace& workspace, bool timed) const;
     void move(GrowthState& state) const;
     void split(GrowthState& state, GrowthWorkspace& workspace) const;
