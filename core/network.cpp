@@ -55,12 +55,19 @@ Network::Network(const Genome& genome) : layers_(genome.layers), params_(genome.
         for (int j = 0; j < out; ++j) {
             double weight_sum = 0.0;
             for (int k = 0; k < in; ++k) {
-                weights[static_cast<std::size_t>(j) * in + k] = params_[offset + k];
+                weights[static_cast<std::size_t>(j) * in + k] = kernel::weight_scale * params_[offset + k];
                 weight_sum += params_[offset + k];
             }
             const double threshold = params_[offset + in];
             // a = -t + sum (x - 0.5) w = sum x w + (-t - 0.5 sum w): the 0.5 is folded once.
-            bias[j] = -threshold - 0.5 * weight_sum;
+            // Both scaled for the kernel (see kernel::weight_scale).
+            bias[j] = kernel::weight_scale * (-threshold - 0.5 * weight_sum);
+            // Finite parameters near the largest double can still overflow here.
+            bool finite = std::isfinite(bias[j]);
+            for (int k = 0; k < in; ++k) finite = finite && std::isfinite(weights[static_cast<std::size_t>(j) * in + k]);
+            if (!finite)
+                throw ConfigError("network: neuron " + std::to_string(j) + " of layer " + std::to_string(l) +
+                                  " has parameters too large to evaluate (their sum overflows)");
             offset += static_cast<std::size_t>(in) + 1;
         }
         weights_.push_back(std::move(weights));

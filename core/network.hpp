@@ -36,7 +36,8 @@ struct NetworkWorkspace {
 class Network {
 public:
     // Throws ConfigError if the genome's size does not match its layers, a
-    // layer is empty, or a parameter is not finite.
+    // layer is empty, a parameter is not finite, or a neuron's parameters
+    // are so large (near 1e308) that folding them overflows.
     explicit Network(const Genome& genome);
 
     int inputs() const { return layers_.front(); }

@@ -15,42 +15,39 @@ static_assert(block % lanes == 0);
 // Broadcasts are written as scalar * vector (never v4{x,x,x,x}): GCC 12 turns
 // the latter, inlined into the AVX2 clone, into two instructions.
 
-// sigmoid(a) = 1 / (1 + e^-a) in one division. Cody-Waite reduction
-// -a = n ln2 + r (|r| <= ln2/2); with s = -r = a + n ln2, Cephes' Pade form
-// e^r = (q - p) / (q + p), p = s P(s^2), q = Q(s^2) (~1 ulp), so
-//   sigmoid = (q + p) / ((q + p) + 2^n (q - p)).
+// sigmoid(a) = 1 / (1 + e^-a) = 1 / (1 + 2^b) in one division, from
+// b = -a log2(e), which the layers compute directly (their weights and biases
+// come scaled by -log2(e)): so the reduction needs no multiplication.
+// b = n + y with n = round(b) and y = b - n exact, |y| <= 1/2; then
+// 2^y = (q + p) / (q - p), p = y P(y^2), q = Q(y^2), a [5/5] rational fitted
+// for least maximum error (Remez; 8e-19 relative, far below a double's
+// rounding: see docs/performance.md), and
+//   sigmoid = (q - p) / ((q - p) + 2^n (q + p)).
 // n is rounded with the 1.5*2^52 + 1023 shifter, whose low mantissa bits then
 // hold n + 1023 as an integer (AVX2 has no double->int64 conversion): shifted
-// left by 52 they are the exponent bits of 2^n. p = s + s^3 P'(s^2), as
-// Cephes' leading coefficient rounds to exactly 1. Both save an operation and
-// a constant over the textbook form (kernel_ab: about 3 % faster).
-// a is clamped to [-700, 700], where 2^n (q - p) stays finite: beyond it
-// the sigmoid differs from the exact one by less than 1e-304. The
-// clamps compile to vmaxpd/vminpd because this file is built with
+// left by 52 they are the exponent bits of 2^n.
+// b is clamped to [-1010, 1010] (|a| <= 700), where 2^n (q + p) stays
+// finite: beyond it the sigmoid differs from the exact one by less than
+// 1e-304. The clamps compile to vmaxpd/vminpd because this file is built with
 // -ffinite-math-only (nothing here is NaN or infinite: the genome and the
-// inputs are checked finite). n ln2 is one FMA with ln2 rounded to a double:
-// that adds at most |n| * 2.3e-17 relative error, and |n| <= 100 wherever the
-// sigmoid exceeds 1e-30 (measured: 1.9e-16 absolute over [-800, 800]).
+// inputs are checked finite).
 template <class T, class Bits>
-[[gnu::always_inline]] inline T sigmoid_generic(T a) {
-    constexpr double log2e = 1.4426950408889634074;
-    constexpr double ln2 = 0.69314718055994530942;
+[[gnu::always_inline]] inline T sigmoid_scaled_generic(T b) {
     constexpr double shifter = 0x1.8p52 + 1023;
-    a = a > -700.0 ? a : T{} - 700.0;
-    a = a < 700.0 ? a : T{} + 700.0;
-    const T t = a * -log2e + shifter;
+    b = b > -1010.0 ? b : T{} - 1010.0;
+    b = b < 1010.0 ? b : T{} + 1010.0;
+    const T t = b + shifter;
     const T n = t - shifter;
-    const T s = a + n * ln2;
-    const T ss = s * s;
-    const T p = (s * ss) * (1.26177193074810590878e-4 * ss + 3.02994407707441961300e-2) + s;
-    const T q = ((3.00198505138664455042e-6 * ss + 2.52448340349684104192e-3) * ss + 2.27265548208155028766e-1) * ss +
-                2.00000000000000000009e0;
+    const T y = b - n;
+    const T x = y * y;
+    const T p = y * ((0.0230933634307872029594 * x + 20.2020597632429332954) * x + 1513.906112640028138708);
+    const T q = (x + 233.1841151404872565892) * x + 4368.209682154514190153;
     const Bits scale = std::bit_cast<Bits>(t) << 52;
-    const T numerator = q + p;
-    return numerator / (numerator + std::bit_cast<T>(scale) * (q - p));
+    const T numerator = q - p;
+    return numerator / (numerator + std::bit_cast<T>(scale) * (q + p));
 }
 
-[[gnu::always_inline]] inline v4 sigmoid(v4 a) { return sigmoid_generic<v4, u4>(a); }
+[[gnu::always_inline]] inline v4 sigmoid_scaled(v4 b) { return sigmoid_scaled_generic<v4, u4>(b); }
 
 // Pre-activations of neurons j0..j0+G-1 for one block:
 // out[j][v] = bias_j + sum_k W[j][k] * in[k][v], in and out feature-major
@@ -105,7 +102,7 @@ template <int G>
         }
         j += size;
     }
-    for (int i = 0; i < O * block; i += lanes) store(out + i, sigmoid(load(out + i)));
+    for (int i = 0; i < O * block; i += lanes) store(out + i, sigmoid_scaled(load(out + i)));
 }
 
 // 4 x 4 transpose in registers: out[i][j] = in[j][i].
@@ -197,7 +194,7 @@ template <class RowsOf>
 
 }  // namespace
 
-double sigmoid_vectorizable(double a) { return sigmoid_generic<double, std::uint64_t>(a); }
+double sigmoid_vectorizable(double a) { return sigmoid_scaled_generic<double, std::uint64_t>(a * weight_scale); }
 
 [[gnu::target_clones("arch=x86-64-v3", "default")]]
 void evaluate(const std::vector<Layer>& layers, const double* input, double* output, std::ptrdiff_t count,

@@ -16,10 +16,15 @@ namespace morphogen::kernel {
 // Vertices per block: 8 doubles = two AVX2 registers per neuron.
 inline constexpr int block = 8;
 
+// What the layers' weights and biases are multiplied by: the kernel computes
+// b = -a log2(e) instead of the activation a, and sigmoid(a) = 1 / (1 + 2^b)
+// needs no multiplication to reduce its argument.
+inline constexpr double weight_scale = -1.4426950408889634074;  // -log2(e)
+
 struct Layer {
     int inputs = 0, outputs = 0;
-    const double* weights = nullptr;  // outputs x inputs, row-major (neuron j's row)
-    const double* bias = nullptr;     // outputs: -threshold - 0.5 * sum of weights
+    const double* weights = nullptr;  // outputs x inputs, row-major (neuron j's row), times weight_scale
+    const double* bias = nullptr;     // outputs: (-threshold - 0.5 * sum of weights) times weight_scale
 };
 
 // Evaluates `count` vertices. `input` holds each vertex's inputs contiguously
