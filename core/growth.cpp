@@ -136,12 +136,8 @@ struct BlockGather {
     static void fill(const void* context, std::ptrdiff_t first, int count, double* rows) {
         thread_local std::uint64_t phase = 0;
         const auto& self = *static_cast<const BlockGather*>(context);
-        if (!self.timed) {
-            kernel::gather_inputs(self.input, static_cast<int>(first), count, rows);
-            return;
-        }
-        ++self.blocks;
-        if (phase++ % sample_every != 0) {
+        if (self.timed) ++self.blocks;
+        if (!self.timed || phase++ % sample_every != 0) {
             kernel::gather_inputs(self.input, static_cast<int>(first), count, rows);
             return;
         }

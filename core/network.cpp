@@ -2,7 +2,9 @@
 
 #include "errors.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <span>
 #include <stdexcept>
 
 namespace morphogen {
@@ -63,9 +65,8 @@ Network::Network(const Genome& genome) : layers_(genome.layers), params_(genome.
             // Both scaled for the kernel (see kernel::weight_scale).
             bias[j] = kernel::weight_scale * (-threshold - 0.5 * weight_sum);
             // Finite parameters near the largest double can still overflow here.
-            bool finite = std::isfinite(bias[j]);
-            for (int k = 0; k < in; ++k) finite = finite && std::isfinite(weights[static_cast<std::size_t>(j) * in + k]);
-            if (!finite)
+            const auto row = std::span(weights).subspan(static_cast<std::size_t>(j) * in, in);
+            if (!std::isfinite(bias[j]) || !std::ranges::all_of(row, [](double w) { return std::isfinite(w); }))
                 throw ConfigError("network: neuron " + std::to_string(j) + " of layer " + std::to_string(l) +
                                   " has parameters too large to evaluate (their sum overflows)");
             offset += static_cast<std::size_t>(in) + 1;
