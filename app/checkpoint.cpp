@@ -5,6 +5,7 @@
 #include "experiment_config.hpp"
 #include "fnv_hash.hpp"
 #include "ga_state_json.hpp"
+#include "json_text.hpp"
 #include "network.hpp"
 
 namespace morphogen {
@@ -41,9 +42,9 @@ json checkpoint_content(const std::string& text, const std::string& source) {
     if (text.empty()) throw refuse("the file is empty");
     json document;
     try {
-        document = json::parse(text);
-    } catch (const json::parse_error& e) {
-        throw refuse("not valid JSON (truncated or corrupt) near byte " + std::to_string(e.byte));
+        document = read_json_object(text);
+    } catch (const JsonTextError& e) {
+        throw refuse(std::string("not valid JSON (truncated or corrupt): ") + e.what());
     }
     if (!document.is_object() || !document.contains("format") || document["format"] != format_name)
         throw refuse("not a morphogen checkpoint (\"format\" is not \"" + std::string(format_name) + "\")");

@@ -1,5 +1,7 @@
 // `morphogen validate CONFIG...`: reports every problem of each config at
-// once (with its key path), or "valid". Exit 0 if all are valid, 2 otherwise.
+// once (with its key path), or "valid". Exit 0 if all are valid, else 2 for an
+// invalid config, 3 for an unreadable file (the config or its seed mesh), 4 for
+// a seed mesh that is not usable (the first of these wins over later ones, 2 over all).
 #include "commands.hpp"
 #include "errors.hpp"
 #include "exit_codes.hpp"
@@ -22,10 +24,14 @@ int run_validate(const ValidateOptions& o) {
     for (const std::string& path : o.configs) {
         try {
             const ExperimentConfig config = load_experiment_config(path);
+            // The same exceptions (and exit codes) as evolve and grow give: a seed
+            // file that cannot be read is 3, one that is not a usable mesh 4.
             try {
                 (void)make_seed(config.growth.seed_mesh, config.growth.seed_radius);
-            } catch (const Error& e) {
-                throw ConfigError(path + ": growth.seed_mesh: " + e.what());
+            } catch (const IoError& e) {
+                throw IoError(path + ": " + e.what());
+            } catch (const MeshError& e) {
+                throw MeshError(path + ": growth.seed_mesh: " + e.what());
             }
             std::cout << path << ": valid\n";
             if (o.print_resolved) std::cout << config.resolved.dump(2) << '\n';
@@ -35,6 +41,9 @@ int run_validate(const ValidateOptions& o) {
         } catch (const IoError& e) {
             std::cerr << e.what() << '\n';
             if (result == exit_code::ok) result = exit_code::io;
+        } catch (const MeshError& e) {
+            std::cerr << e.what() << '\n';
+            if (result == exit_code::ok) result = exit_code::mesh;
         }
     }
     return result;

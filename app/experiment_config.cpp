@@ -73,7 +73,8 @@ RunParams read_run_params(ObjectReader& reader) {
     p.name = reader.string("name", p.name);
     if (!valid_name(p.name))
         reader.issues().add(reader.path_of("name"),
-                            "\"" + p.name + "\" is not a usable directory name: use at most 100 of A-Z a-z 0-9 . _ -, "
+                            json(p.name).dump(-1, ' ', false, json::error_handler_t::replace) +
+                                " is not a usable directory name: use at most 100 of A-Z a-z 0-9 . _ -, "
                                             "not starting with '.'");
     reader.finish();
     return p;

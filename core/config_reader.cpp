@@ -1,9 +1,13 @@
 #include "config_reader.hpp"
 
 #include "errors.hpp"
+#include "json_text.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -68,6 +72,12 @@ std::string show(const json& value) {
 std::string type_name(const json& value) {
     return value.type_name();
 }
+// 2^53 - 1: every integer up to this is exact as a double.
+constexpr double max_exact_float_integer = 9007199254740991.0;
+// A key or string as JSON writes it: quoted and escaped, so it cannot split a line.
+std::string quote_json(const std::string& text) {
+    return json(text).dump(-1, ' ', false, json::error_handler_t::replace);
+}
 std::string show_number(double v) {
     std::ostringstream s;
     s << v;
@@ -122,9 +132,16 @@ long long ObjectReader::integer(const std::string& key, long long fallback, long
     const json* value = find(key);
     long long result = fallback;
     if (value != nullptr) {
+        // Integers written in float form (9e15, 3.0) are exact only up to 2^53 - 1.
+        const bool whole_float = value->is_number_float() && std::floor(value->get<double>()) == value->get<double>();
         const bool integral = value->is_number_integer() ||
-                              (value->is_number_float() && std::floor(value->get<double>()) == value->get<double>() &&
-                               std::abs(value->get<double>()) < 9e15);
+                              (whole_float && std::abs(value->get<double>()) <= max_exact_float_integer);
+        if (whole_float && !integral) {
+            issues_.add(path_of(key), show(*value) + " is too large to be exact in the form it is written; write it "
+                                                     "as a plain integer (no '.' or exponent)");
+            resolved_[key] = result;
+            return result;
+        }
         if (!integral) {
             issues_.add(path_of(key), "expected an integer, got " + type_name(*value) + " " + show(*value));
         } else {
@@ -178,7 +195,7 @@ std::string ObjectReader::choice(const std::string& key, const std::string& fall
         (*object_)[key].is_string()) {
         std::string list;
         for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + ("\"" + a + "\"");
-        std::string message = "\"" + result + "\" is not one of " + list;
+        std::string message = quote_json(result) + " is not one of " + list;
         if (auto near = nearest(result, allowed)) message += " (did you mean \"" + *near + "\"?)";
         issues_.add(path_of(key), message);
         result = fallback;
@@ -257,41 +274,34 @@ void ObjectReader::finish() {
     if (object_ == nullptr) return;
     for (const auto& [key, value] : object_->items()) {
         if (std::find(known_.begin(), known_.end(), key) != known_.end()) continue;
-        std::string message = "unknown key \"" + key + "\"";
+        std::string message = "unknown key " + quote_json(key);
         if (auto near = nearest(key, known_)) message += " (did you mean \"" + *near + "\"?)";
-        issues_.add(path_of(key), message);
+        const bool plain = std::all_of(key.begin(), key.end(), [](char c) { return c > ' ' && c != 127; });
+        issues_.add(path_of(plain ? key : quote_json(key)), message);
     }
 }
 
 json parse_json_text(const std::string& text, const std::string& source) {
     try {
-        return json::parse(text);
-    } catch (const json::parse_error& e) {
-        // Translate the byte offset into line and column for the user.
-        const std::size_t offset = e.byte == 0 ? 0 : std::min<std::size_t>(e.byte - 1, text.size());
-        std::size_t line = 1, column = 1;
-        for (std::size_t i = 0; i < offset; ++i) {
-            if (text[i] == '\n') {
-                ++line;
-                column = 1;
-            } else {
-                ++column;
-            }
-        }
-        std::string what = e.what();
-        if (auto pos = what.find("syntax error"); pos != std::string::npos) what = what.substr(pos);
-        throw ConfigError(source + ": invalid JSON at line " + std::to_string(line) + ", column " +
-                          std::to_string(column) + ": " + what);
+        return read_json_object(text);
+    } catch (const JsonTextError& e) {
+        throw ConfigError(source + ": " + e.what());
     }
 }
 
-json load_json_file(const std::string& path) {
+std::string read_document_file(const std::string& path) {
+    errno = 0;
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path + ": cannot open for reading");
+    if (!in) throw IoError(path + ": cannot open for reading" + (errno != 0 ? std::string(": ") + std::strerror(errno) : ""));
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    if (in.bad()) throw IoError(path + ": read failed");
-    return parse_json_text(buffer.str(), path);
+    // A directory opens but cannot be read; an empty file reads nothing and is
+    // left to the JSON reader to report.
+    if (in.bad() || (buffer.str().empty() && std::filesystem::is_directory(path)))
+        throw IoError(path + ": read failed" + (std::filesystem::is_directory(path) ? ": it is a directory" : ""));
+    return std::move(buffer).str();
 }
+
+json load_json_file(const std::string& path) { return parse_json_text(read_document_file(path), path); }
 
 }  // namespace morphogen

@@ -76,8 +76,12 @@ private:
     nlohmann::json resolved_ = nlohmann::json::object();
 };
 
-// Parse JSON text; a syntax error becomes a ConfigError naming source, line and column.
+// Parse JSON text with the strict reader (json_text.hpp): anything but one
+// well-formed JSON object within its limits is a ConfigError naming source,
+// line, column and key path.
 nlohmann::json parse_json_text(const std::string& text, const std::string& source);
+// A file's bytes; IoError (with the system's reason) if it cannot be read.
+std::string read_document_file(const std::string& path);
 // Read and parse a JSON file (IoError if unreadable, ConfigError if malformed).
 nlohmann::json load_json_file(const std::string& path);
 

@@ -2,6 +2,7 @@
 
 #include "config_reader.hpp"
 #include "errors.hpp"
+#include "json_text.hpp"
 
 #include <cmath>
 #include <fstream>
@@ -25,7 +26,7 @@ Genome genome_from_json(const json& document, const std::string& source) {
         fail("version " + document["version"].dump() + " is not supported (this build reads version 1)");
     for (const auto& [key, value] : document.items())
         if (key != "format" && key != "version" && key != "layers" && key != "params")
-            fail("unknown key \"" + key + "\"");
+            fail("unknown key " + json(key).dump(-1, ' ', false, json::error_handler_t::replace));
     Genome genome;
     const json* layers = document.contains("layers") ? &document["layers"] : nullptr;
     if (layers == nullptr || !layers->is_array() || layers->size() < 2) fail("\"layers\" must list at least two sizes");
@@ -46,6 +47,15 @@ Genome genome_from_json(const json& document, const std::string& source) {
     if (genome.params.size() != parameter_count(genome.layers))
         fail("layers " + layers->dump() + " need " + std::to_string(parameter_count(genome.layers)) +
              " params, found " + std::to_string(genome.params.size()));
+    // Finite parameters near the largest double can still overflow when the
+    // network folds them (network.cpp): refuse them here, naming this file.
+    try {
+        (void)Network(genome);
+    } catch (const ConfigError& e) {
+        std::string why = e.what();
+        if (why.rfind("network: ", 0) == 0) why.erase(0, 9);
+        fail(why);
+    }
     return genome;
 }
 
@@ -60,9 +70,9 @@ void save_genome(const Genome& genome, const std::string& path) {
 Genome load_genome(const std::string& path) {
     json document;
     try {
-        document = load_json_file(path);
-    } catch (const ConfigError& e) {
-        throw IoError(e.what());
+        document = read_json_object(read_document_file(path));
+    } catch (const JsonTextError& e) {
+        throw IoError(path + ": not a valid genome file: " + e.what());
     }
     return genome_from_json(document, path);
 }

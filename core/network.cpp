@@ -68,7 +68,8 @@ Network::Network(const Genome& genome) : layers_(genome.layers), params_(genome.
             const auto row = std::span(weights).subspan(static_cast<std::size_t>(j) * in, in);
             if (!std::isfinite(bias[j]) || !std::ranges::all_of(row, [](double w) { return std::isfinite(w); }))
                 throw ConfigError("network: neuron " + std::to_string(j) + " of layer " + std::to_string(l) +
-                                  " has parameters too large to evaluate (their sum overflows)");
+                                  " has parameters too large to evaluate (params[" + std::to_string(offset) + ".." +
+                                  std::to_string(offset + in) + "]: their sum overflows)");
             offset += static_cast<std::size_t>(in) + 1;
         }
         weights_.push_back(std::move(weights));

@@ -88,7 +88,14 @@ Seed make_seed(const std::string& seed_mesh, double radius) {
     if (is_builtin_seed(seed_mesh)) {
         seed.mesh = builtin_seed_mesh(seed_mesh, radius);
     } else {
-        seed.mesh = TriMesh::from_arrays(read_mesh(seed_mesh), "seed mesh " + seed_mesh);
+        MeshArrays arrays;
+        try {
+            arrays = read_mesh(seed_mesh);
+        } catch (const IoError& e) {
+            // Name the config key as well as the file: the same words in validate, evolve and grow.
+            throw IoError(std::string("growth.seed_mesh: ") + e.what());
+        }
+        seed.mesh = TriMesh::from_arrays(std::move(arrays), "seed mesh " + seed_mesh);
         const double volume = signed_volume(seed.mesh);
         if (!(volume > 0.0))
             throw MeshError("seed mesh " + seed_mesh + ": faces are oriented inward (signed volume " +
