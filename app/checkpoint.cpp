@@ -44,7 +44,7 @@ json checkpoint_content(const std::string& text, const std::string& source) {
     try {
         document = read_json_object(text);
     } catch (const JsonTextError& e) {
-        throw refuse(std::string("not valid JSON (truncated or corrupt): ") + e.what());
+        throw refuse(std::string("invalid JSON (truncated, corrupt or hostile) at ") + e.what());
     }
     if (!document.is_object() || !document.contains("format") || document["format"] != format_name)
         throw refuse("not a morphogen checkpoint (\"format\" is not \"" + std::string(format_name) + "\")");

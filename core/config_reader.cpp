@@ -285,7 +285,7 @@ json parse_json_text(const std::string& text, const std::string& source) {
     try {
         return read_json_object(text);
     } catch (const JsonTextError& e) {
-        throw ConfigError(source + ": " + e.what());
+        throw ConfigError(source + ": invalid JSON at " + e.what());
     }
 }
 

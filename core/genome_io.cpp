@@ -72,7 +72,7 @@ Genome load_genome(const std::string& path) {
     try {
         document = read_json_object(read_document_file(path));
     } catch (const JsonTextError& e) {
-        throw IoError(path + ": not a valid genome file: " + e.what());
+        throw IoError(path + ": not a valid genome file: invalid JSON at " + e.what());
     }
     return genome_from_json(document, path);
 }

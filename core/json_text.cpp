@@ -14,7 +14,7 @@ namespace {
 
 std::string where(std::size_t line, std::size_t column, const std::string& key_path) {
     std::string text = "line " + std::to_string(line) + ", column " + std::to_string(column);
-    if (!key_path.empty()) text += ", at " + key_path;
+    if (!key_path.empty()) text += ", in " + key_path;
     return text;
 }
 

@@ -37,7 +37,8 @@ struct JsonTextError : std::runtime_error {
     std::size_t column;
     std::string key_path;  // "" at the top of the document
     std::string reason;    // one line, e.g. "duplicate key \"steps\""
-    // what() is "line L, column C[, at PATH]: REASON", one line.
+    // what() is "line L, column C[, in PATH]: REASON", one line; callers prefix
+    // "invalid JSON at " and the file.
 };
 
 // Parses `text` as one JSON object (see above); throws JsonTextError.

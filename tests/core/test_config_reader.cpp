@@ -83,3 +83,33 @@ TEST_CASE("nearest-key suggestions", "[config]") {
     CHECK(nearest("split_are", {"steps", "split_area"}) == std::optional<std::string>("split_area"));
     CHECK_FALSE(nearest("zzzzzzzz", {"steps", "speed"}).has_value());
 }
+
+TEST_CASE("integers written in float form are exact up to 2^53 - 1", "[config]") {
+    const json section = json::parse(R"({"a": 9e15, "b": 9007199254740991.0, "c": 3.0, "d": 9007199254740992.0,
+                                         "e": 1e16, "f": 2.5, "g": -9e15})");
+    ConfigIssues issues;
+    ObjectReader reader(&section, "run", issues);
+    const long long big = 9007199254740991LL;
+    CHECK(reader.integer("a", 0, 0, big) == 9'000'000'000'000'000LL);
+    CHECK(reader.integer("b", 0, 0, big) == big);
+    CHECK(reader.integer("c", 0, 0, 10) == 3);
+    CHECK(reader.integer("d", 1, 0, big) == 1);  // 2^53: 2^53 + 1 reads the same, so it may not be what was meant
+    CHECK(reader.integer("e", 1, 0, big) == 1);
+    CHECK(reader.integer("f", 1, 0, big) == 1);
+    CHECK(reader.integer("g", 0, -big, big) == -9'000'000'000'000'000LL);
+    CHECK(issues.list().size() == 3);
+    CHECK(has_issue(issues, "run.d", "plain integer"));
+    CHECK(has_issue(issues, "run.e", "plain integer"));
+    CHECK(has_issue(issues, "run.f", "expected an integer"));
+    CHECK(reader.resolved()["a"] == 9'000'000'000'000'000LL);
+}
+
+TEST_CASE("keys and strings that would break the line are shown escaped", "[config]") {
+    const json section = json::parse(R"({"ste\nps": 1, "seed_mesh": "x"})");
+    ConfigIssues issues;
+    ObjectReader reader(&section, "growth", issues);
+    (void)read_growth_params(reader);
+    REQUIRE(issues.list().size() == 1);
+    CHECK(issues.list()[0].path == "growth.\"ste\\nps\"");
+    CHECK(issues.format("c.json").find('\n') == std::string::npos);
+}
