@@ -9,7 +9,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
+#include <variant>
 
 namespace morphogen {
 
@@ -78,6 +80,31 @@ constexpr double max_exact_float_integer = 9007199254740991.0;
 std::string quote_json(const std::string& text) {
     return json(text).dump(-1, ' ', false, json::error_handler_t::replace);
 }
+// An integer in [min, max], or the message saying why the value is not one.
+// A whole number written in float form (9e15, 3.0) counts up to 2^53 - 1:
+// beyond that a double cannot tell it from its neighbours.
+std::variant<long long, std::string> whole_number(const json& value, long long min, long long max) {
+    const std::string out_of_range =
+        show(value) + " is out of range [" + std::to_string(min) + ", " + std::to_string(max) + "]";
+    if (value.is_number_integer()) {
+        if (value.is_number_unsigned() && value.get<unsigned long long>() >
+                                              static_cast<unsigned long long>(std::numeric_limits<long long>::max()))
+            return out_of_range;
+        const auto v = value.get<long long>();
+        if (v < min || v > max) return out_of_range;
+        return v;
+    }
+    if (value.is_number_float()) {
+        const double d = value.get<double>();
+        if (std::isfinite(d) && std::floor(d) == d) {
+            if (d < static_cast<double>(min) || d > static_cast<double>(max)) return out_of_range;
+            if (std::abs(d) > max_exact_float_integer)
+                return show(value) + " is too large to be exact in float form; write it as a plain integer";
+            return static_cast<long long>(d);
+        }
+    }
+    return "expected an integer, got " + type_name(value) + " " + show(value);
+}
 std::string show_number(double v) {
     std::ostringstream s;
     s << v;
@@ -132,30 +159,11 @@ long long ObjectReader::integer(const std::string& key, long long fallback, long
     const json* value = find(key);
     long long result = fallback;
     if (value != nullptr) {
-        // Integers written in float form (9e15, 3.0) are exact only up to 2^53 - 1.
-        const bool whole_float = value->is_number_float() && std::floor(value->get<double>()) == value->get<double>();
-        const bool integral = value->is_number_integer() ||
-                              (whole_float && std::abs(value->get<double>()) <= max_exact_float_integer);
-        if (whole_float && !integral) {
-            issues_.add(path_of(key), show(*value) + " is too large to be exact in the form it is written; write it "
-                                                     "as a plain integer (no '.' or exponent)");
-            resolved_[key] = result;
-            return result;
-        }
-        if (!integral) {
-            issues_.add(path_of(key), "expected an integer, got " + type_name(*value) + " " + show(*value));
-        } else {
-            const bool huge = value->is_number_unsigned() &&
-                              value->get<unsigned long long>() > static_cast<unsigned long long>(max);
-            const long long v = huge ? max : value->is_number_float() ? static_cast<long long>(value->get<double>())
-                                                                       : value->get<long long>();
-            if (huge || v < min || v > max) {
-                issues_.add(path_of(key), show(*value) + " is out of range [" + std::to_string(min) + ", " +
-                                              std::to_string(max) + "]");
-            } else {
-                result = v;
-            }
-        }
+        auto read = whole_number(*value, min, max);
+        if (auto* v = std::get_if<long long>(&read))
+            result = *v;
+        else
+            issues_.add(path_of(key), std::get<std::string>(read));
     }
     resolved_[key] = result;
     return result;
@@ -217,15 +225,12 @@ std::vector<long long> ObjectReader::integer_list(const std::string& key, const 
             for (std::size_t i = 0; i < value->size(); ++i) {
                 const json& item = (*value)[i];
                 const std::string item_path = path_of(key) + "[" + std::to_string(i) + "]";
-                if (!item.is_number_integer()) {
-                    issues_.add(item_path, "expected an integer, got " + type_name(item) + " " + show(item));
-                    ok = false;
-                } else if (item.get<long long>() < min || item.get<long long>() > max) {
-                    issues_.add(item_path, show(item) + " is out of range [" + std::to_string(min) + ", " +
-                                               std::to_string(max) + "]");
-                    ok = false;
+                auto read = whole_number(item, min, max);
+                if (auto* v = std::get_if<long long>(&read)) {
+                    items.push_back(*v);
                 } else {
-                    items.push_back(item.get<long long>());
+                    issues_.add(item_path, std::get<std::string>(read));
+                    ok = false;
                 }
             }
             if (ok) result = items;

@@ -257,7 +257,7 @@ JsonTextError::JsonTextError(std::size_t line_, std::size_t column_, std::string
       reason(std::move(reason_)) {}
 
 json read_json_object(std::string_view text) {
-    if (const void* nul = std::memchr(text.data(), '\0', text.size()); nul != nullptr) {
+    if (const void* nul = text.empty() ? nullptr : std::memchr(text.data(), '\0', text.size()); nul != nullptr) {
         const auto offset = static_cast<std::size_t>(static_cast<const char*>(nul) - text.data());
         throw_at(text, {offset, "", "a NUL byte, which JSON text cannot contain (binary data or a damaged file?)"});
     }

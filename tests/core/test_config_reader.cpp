@@ -93,15 +93,29 @@ TEST_CASE("integers written in float form are exact up to 2^53 - 1", "[config]")
     CHECK(reader.integer("a", 0, 0, big) == 9'000'000'000'000'000LL);
     CHECK(reader.integer("b", 0, 0, big) == big);
     CHECK(reader.integer("c", 0, 0, 10) == 3);
-    CHECK(reader.integer("d", 1, 0, big) == 1);  // 2^53: 2^53 + 1 reads the same, so it may not be what was meant
-    CHECK(reader.integer("e", 1, 0, big) == 1);
+    CHECK(reader.integer("d", 1, 0, big + 1) == 1);  // 2^53: 2^53 + 1 reads the same, so it may not be what was meant
+    CHECK(reader.integer("e", 1, 0, big) == 1);     // beyond the range anyway
     CHECK(reader.integer("f", 1, 0, big) == 1);
     CHECK(reader.integer("g", 0, -big, big) == -9'000'000'000'000'000LL);
     CHECK(issues.list().size() == 3);
     CHECK(has_issue(issues, "run.d", "plain integer"));
-    CHECK(has_issue(issues, "run.e", "plain integer"));
+    CHECK(has_issue(issues, "run.e", "out of range"));
     CHECK(has_issue(issues, "run.f", "expected an integer"));
     CHECK(reader.resolved()["a"] == 9'000'000'000'000'000LL);
+    // Lists of integers read their items the same way.
+    const json network = json::parse(R"({"hidden": [30.0, 2e1], "outputs": 4.0})");
+    ConfigIssues none;
+    ObjectReader net(&network, "network", none);
+    CHECK(read_network_params(net).layers() == std::vector<int>{12, 30, 20, 4});
+    CHECK(none.empty());
+    CHECK(net.resolved()["hidden"] == json::parse("[30, 20]"));
+    const json bad = json::parse(R"({"hidden": [1.5, 1e300, 18446744073709551615]})");
+    ConfigIssues three;
+    ObjectReader bad_reader(&bad, "network", three);
+    (void)read_network_params(bad_reader);
+    CHECK(has_issue(three, "network.hidden[0]", "expected an integer"));
+    CHECK(has_issue(three, "network.hidden[1]", "out of range"));
+    CHECK(has_issue(three, "network.hidden[2]", "out of range"));
 }
 
 TEST_CASE("keys and strings that would break the line are shown escaped", "[config]") {
