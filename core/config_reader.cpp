@@ -295,15 +295,18 @@ json parse_json_text(const std::string& text, const std::string& source) {
 }
 
 std::string read_document_file(const std::string& path) {
+    // A directory opens as a stream on Linux and then reads as empty.
+    std::error_code ignored;
+    if (std::filesystem::is_directory(path, ignored)) throw IoError(path + ": cannot read: it is a directory");
     errno = 0;
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path + ": cannot open for reading" + (errno != 0 ? std::string(": ") + std::strerror(errno) : ""));
+    if (!in) {
+        const std::string reason = errno != 0 ? std::string(": ") + std::strerror(errno) : "";
+        throw IoError(path + ": cannot open for reading" + reason);
+    }
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    // A directory opens but cannot be read; an empty file reads nothing and is
-    // left to the JSON reader to report.
-    if (in.bad() || (buffer.str().empty() && std::filesystem::is_directory(path)))
-        throw IoError(path + ": read failed" + (std::filesystem::is_directory(path) ? ": it is a directory" : ""));
+    if (in.bad()) throw IoError(path + ": read failed");
     return std::move(buffer).str();
 }
 

@@ -273,7 +273,8 @@ json read_json_object(std::string_view text) {
                                     /*ignore_comments=*/false);
     if (!ok) {
         if (builder.failure()) throw_at(text, *builder.failure());
-        throw_at(text, {static_cast<std::size_t>(furthest - text.data()), "", "invalid JSON"});  // not reached: every stop records why
+        // Not reached: every stop of the parse records why.
+        throw_at(text, {static_cast<std::size_t>(furthest - text.data()), "", "invalid JSON"});
     }
     return root;
 }

@@ -104,7 +104,8 @@ TEST_CASE("a missing seed mesh is exit 3 naming growth.seed_mesh in validate, ev
 
 TEST_CASE("grow refuses hostile genome files in one line naming the file, exit 3", "[app][json]") {
     TempDir dir("hostile-genome");
-    const std::string grow = "grow --config " + dir.write("c.json", small_network) + " --steps 3 -o " + dir.file("x.obj");
+    const std::string grow =
+        "grow --config " + dir.write("c.json", small_network) + " --steps 3 -o " + dir.file("x.obj");
     const std::string good = dir.write("good.json", genome_with(""));
     REQUIRE(run_morphogen(grow + " --genome " + good).code == 0);
     fs::remove(dir.path / "x.obj");
@@ -180,8 +181,8 @@ TEST_CASE("corpus: every hostile genome file is refused by grow", "[app][json][c
     TempDir dir("corpus-genome");
     const std::string config = dir.write("c.json", small_network);
     for (const fs::path& file : corpus_files("genome")) {
-        const CliResult r = run_morphogen("grow --config " + config + " --genome " + shell_quoted(file) + " --steps 3 -o " +
-                                          dir.file("x.obj"));
+        const CliResult r = run_morphogen("grow --config " + config + " --genome " + shell_quoted(file) +
+                                          " --steps 3 -o " + dir.file("x.obj"));
         INFO(file.filename().string() << ": " << r.output);
         CHECK(r.code == 3);
         check_one_line_naming(r, file.string() + ": not a valid genome file: ");

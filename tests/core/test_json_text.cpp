@@ -28,7 +28,9 @@ JsonTextError error_of(const std::string& text) {
 std::string nested_arrays(std::size_t depth) {
     return "{\"a\":" + std::string(depth, '[') + std::string(depth, ']') + "}";
 }
-bool one_line(const std::string& text) { return text.find('\n') == std::string::npos && text.find('\r') == std::string::npos; }
+bool one_line(const std::string& text) {
+    return text.find('\n') == std::string::npos && text.find('\r') == std::string::npos;
+}
 }  // namespace
 
 TEST_CASE("json text: well-formed objects read as nlohmann reads them", "[json]") {
@@ -152,16 +154,18 @@ TEST_CASE("config files: unreadable files are IoErrors with the system's reason"
 
 TEST_CASE("genome files: malformed JSON and overflowing parameters name the file", "[json][genome]") {
     TempDir dir("json-genome");
-    const std::string good = R"({"format": "morphogen-genome", "version": 1, "layers": [3, 1], "params": [0.5, -0.25, 0.125, 0]})";
+    const std::string head = R"({"format": "morphogen-genome", "version": 1, "layers": [3, 1], )";
+    const std::string good = head + R"("params": [0.5, -0.25, 0.125, 0]})";
+    const std::string open = good.substr(0, good.size() - 1);  // without the closing brace
     CHECK(load_genome(dir.write("good.json", good)).params.size() == 4);
     const std::vector<std::pair<std::string, std::string>> bad = {
-        {"deep.json", good.substr(0, good.size() - 1) + ", \"x\": " + std::string(100'000, '[') + std::string(100'000, ']') + "}"},
-        {"inf.json", R"({"format": "morphogen-genome", "version": 1, "layers": [3, 1], "params": [1e999, 0, 0, 0]})"},
+        {"deep.json", open + ", \"x\": " + std::string(100'000, '[') + std::string(100'000, ']') + "}"},
+        {"inf.json", head + R"("params": [1e999, 0, 0, 0]})"},
         {"nul.json", good + std::string(1, '\0') + "junk"},
         {"null.json", "null"},
-        {"dup.json", good.substr(0, good.size() - 1) + ", \"layers\": [3, 1]}"},
+        {"dup.json", open + ", \"layers\": [3, 1]}"},
         // Finite, but the network's folding (0.5 * the sum of a neuron's weights) overflows.
-        {"overflow.json", R"({"format": "morphogen-genome", "version": 1, "layers": [3, 1], "params": [1e308, 1e308, 0, 0]})"},
+        {"overflow.json", head + R"("params": [1e308, 1e308, 0, 0]})"},
     };
     for (const auto& [name, text] : bad) {
         INFO(name);
@@ -175,5 +179,6 @@ TEST_CASE("genome files: malformed JSON and overflowing parameters name the file
         }
     }
     CHECK_THROWS_WITH(load_genome(dir.file("overflow.json")), Catch::Contains("params[0..3]"));
-    CHECK_THROWS_WITH(load_genome(dir.file("inf.json")), Catch::Contains("line 1, column ") && Catch::Contains("params[0]"));
+    CHECK_THROWS_WITH(load_genome(dir.file("inf.json")),
+                      Catch::Contains("line 1, column ") && Catch::Contains("params[0]"));
 }
