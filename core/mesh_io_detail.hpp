@@ -1,0 +1,115 @@
+#pragma once
+// Internals shared by the per-format mesh files (mesh_io_*.cpp): error helpers,
+// a line/token reader for the text formats, number parsing and formatting.
+// Not part of the public interface (see mesh_io.hpp).
+#include "mesh.hpp"
+
+#include <algorithm>
+#include <bit>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <vector>
+
+namespace morphogen::mesh_io_detail {
+
+static_assert(std::endian::native == std::endian::little || std::endian::native == std::endian::big,
+              "mixed-endian hosts are not supported");
+
+// Throw IoError("<path>: <what>") / IoError("<path>:<line>: <what>").
+[[noreturn]] void fail(const std::string& path, const std::string& what);
+[[noreturn]] void fail_line(const std::string& path, std::size_t line, const std::string& what);
+
+std::string lower(std::string s);
+// A token quoted for an error message, cut to 40 characters.
+std::string excerpt(std::string_view s);
+
+// ---------------------------------------------------------------- writing
+
+// 17 significant digits: enough to read back every double exactly.
+void append_double(std::string& out, double value);
+void append_int(std::string& out, long long value);
+
+template <class T>
+void append_le(std::string& out, T value) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    char bytes[sizeof(T)];
+    std::memcpy(bytes, &value, sizeof(T));
+    if constexpr (std::endian::native == std::endian::big) std::reverse(bytes, bytes + sizeof(T));
+    out.append(bytes, sizeof(T));
+}
+
+std::string header_comment(MeshView mesh);
+
+// The text formats share their body: one line per vertex ("<prefix>x y z")
+// and one per face ("<prefix>i j k", indices from `first_index`).
+void append_text_body(std::string& out, MeshView mesh, std::string_view vertex_prefix, std::string_view face_prefix,
+                      long long first_index);
+std::size_t text_size_guess(MeshView mesh);
+
+// ---------------------------------------------------------------- text parsing
+
+inline bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+// Splits text into lines (any of \n, \r\n) and whitespace-separated tokens.
+class LineReader {
+public:
+    LineReader(std::string_view text, std::size_t first_line = 1, std::size_t offset = 0)
+        : text_(text), pos_(offset), line_(first_line - 1) {}
+
+    // Next line with its comment ('#' to end) removed; false at end of text.
+    bool next(std::string_view& line, char comment = '#') {
+        if (pos_ >= text_.size()) return false;
+        const std::size_t end = std::min(text_.find('\n', pos_), text_.size());
+        line = text_.substr(pos_, end - pos_);
+        pos_ = end + 1;
+        ++line_;
+        if (comment) line = line.substr(0, std::min(line.find(comment), line.size()));
+        return true;
+    }
+    // Next line holding at least one token.
+    bool next_nonblank(std::string_view& line, char comment = '#') {
+        while (next(line, comment))
+            if (std::any_of(line.begin(), line.end(), [](char c) { return !is_space(c); }))
+                return true;
+        return false;
+    }
+    std::size_t line_number() const { return line_; }
+    std::size_t offset() const { return std::min(pos_, text_.size()); }
+
+private:
+    std::string_view text_;
+    std::size_t pos_;
+    std::size_t line_;
+};
+
+// Cuts the next token off the front of `s`; empty when none is left.
+std::string_view take_token(std::string_view& s);
+std::vector<std::string_view> tokens(std::string_view s);
+
+bool parse_double(std::string_view tok, double& value);
+bool parse_long(std::string_view tok, long long& value);
+
+// A finite coordinate; throws naming the line otherwise.
+double coordinate(std::string_view tok, const std::string& path, std::size_t line);
+
+// Counts in headers are only trusted this far for preallocation.
+constexpr long long kMaxReserve = 1 << 20;
+
+// Appends polygon `corners` as a triangle fan (0,i,i+1).
+void add_polygon(std::vector<Face>& faces, const std::vector<int>& corners);
+
+// ---------------------------------------------------------------- formats
+
+std::string obj_bytes(MeshView mesh);
+std::string off_bytes(MeshView mesh);
+std::string ply_bytes(MeshView mesh);
+std::string stl_bytes(MeshView mesh);
+std::string glb_bytes(MeshView mesh, const std::string& path);
+
+MeshArrays read_obj(const std::string& path, std::string_view text);
+MeshArrays read_off(const std::string& path, std::string_view text);
+MeshArrays read_ply(const std::string& path, std::string_view text);
+
+}  // namespace morphogen::mesh_io_detail
