@@ -10,10 +10,10 @@
 #include "mesh_io_detail.hpp"
 
 #include <cerrno>
+#include <cmath>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string_view>
 #include <system_error>
 
@@ -38,15 +38,26 @@ void write_file(const std::string& path, std::string_view bytes) {
     fail(path, "write failed (disk full or device error?)");
 }
 
+// The whole file, refused before reading when it is not a regular file (a
+// device or pipe could be endless) or larger than kMaxMeshFileBytes.
 std::string read_file(const std::string& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
+    const auto status = std::filesystem::status(path, ec);
+    if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        fail(path, "is not a regular file");
     std::ifstream in(path, std::ios::binary);
     if (!in) fail(path, std::string("cannot open for reading: ") + std::strerror(errno));
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) fail(path, "read failed");
-    return std::move(buffer).str();
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) fail(path, "cannot read its size: " + ec.message());
+    if (size > kMaxMeshFileBytes)
+        fail(path, "file of " + std::to_string(size) + " bytes is larger than the limit of " +
+                       std::to_string(kMaxMeshFileBytes) + " bytes for mesh files");
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    in.read(bytes.data(), static_cast<std::streamsize>(size));
+    if (in.gcount() != static_cast<std::streamsize>(size) || in.bad())
+        fail(path, "read failed (the file changed while being read?)");
+    return bytes;
 }
 
 void check_indices(MeshView mesh, const std::string& path) {
@@ -71,31 +82,58 @@ MeshFormat mesh_format_from_path(const std::string& path) {
                    " (expected .obj, .ply, .off, .stl or .glb)");
 }
 
-void write_mesh(MeshView mesh, const std::string& path) {
-    write_mesh(mesh, path, mesh_format_from_path(path));
+void write_mesh(MeshView mesh, const std::string& path, const MeshWriteOptions& options) {
+    write_mesh(mesh, path, mesh_format_from_path(path), options);
 }
 
-void write_mesh(MeshView mesh, const std::string& path, MeshFormat format) {
-    check_indices(mesh, path);
+void write_mesh(MeshView mesh, const std::string& path, MeshFormat format, const MeshWriteOptions& options) {
+    write_file(path, encode_mesh(mesh, format, options, path));
+}
+
+std::string encode_mesh(MeshView mesh, MeshFormat format, const MeshWriteOptions& options, const std::string& source) {
+    check_indices(mesh, source);
     switch (format) {
-        case MeshFormat::obj: write_file(path, obj_bytes(mesh)); return;
-        case MeshFormat::ply: write_file(path, ply_bytes(mesh)); return;
-        case MeshFormat::off: write_file(path, off_bytes(mesh)); return;
-        case MeshFormat::stl: write_file(path, stl_bytes(mesh)); return;
-        case MeshFormat::glb: write_file(path, glb_bytes(mesh, path)); return;
+        case MeshFormat::obj: return obj_bytes(mesh);
+        case MeshFormat::ply: return ply_bytes(mesh, options);
+        case MeshFormat::off: return off_bytes(mesh);
+        case MeshFormat::stl: return stl_bytes(mesh);
+        case MeshFormat::glb: return glb_bytes(mesh, source);
     }
+    fail(source, "unknown mesh format");
+}
+
+MeshArrays parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source) {
+    if (bytes.size() > kMaxMeshFileBytes)
+        fail(source, std::to_string(bytes.size()) + " bytes, more than the limit of " +
+                         std::to_string(kMaxMeshFileBytes) + " bytes for mesh files");
+    switch (format) {
+        case MeshFormat::obj: return read_obj(source, bytes);
+        case MeshFormat::off: return read_off(source, bytes);
+        case MeshFormat::ply: return read_ply(source, bytes);
+        case MeshFormat::stl: return read_stl(source, bytes);
+        case MeshFormat::glb: break;
+    }
+    fail(source, "reading GLB is not supported (use OBJ, PLY, OFF or STL)");
 }
 
 MeshArrays read_mesh(const std::string& path) {
     const MeshFormat format = mesh_format_from_path(path);
-    if (format == MeshFormat::stl || format == MeshFormat::glb)
-        fail(path, "reading STL/GLB is not supported (use OBJ, OFF or PLY)");
-    const std::string text = read_file(path);
-    switch (format) {
-        case MeshFormat::obj: return read_obj(path, text);
-        case MeshFormat::off: return read_off(path, text);
-        default: return read_ply(path, text);
+    if (format == MeshFormat::glb) fail(path, "reading GLB is not supported (use OBJ, PLY, OFF or STL)");
+    return parse_mesh(read_file(path), format, path);
+}
+
+std::vector<Vec3> vertex_normals(MeshView mesh) {
+    std::vector<Vec3> normals(mesh.positions.size(), Vec3::Zero());
+    for (const Face& f : mesh.faces) {
+        const Vec3 n = (mesh.positions[f[1]] - mesh.positions[f[0]])
+                           .cross(mesh.positions[f[2]] - mesh.positions[f[0]]);
+        for (int v : f) normals[v] += n;  // area-weighted: |n| is twice the area
     }
+    for (Vec3& n : normals) {
+        const double len = n.norm();
+        n = len > 0 && std::isfinite(len) ? Vec3(n / len) : Vec3::Zero();
+    }
+    return normals;
 }
 
 }  // namespace morphogen

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace morphogen::mesh_io_detail {
 
@@ -26,6 +27,12 @@ std::string lower(std::string s) {
 void append_double(std::string& out, double value) {
     char buf[32];
     const auto res = std::to_chars(buf, buf + sizeof buf, value, std::chars_format::general, 17);
+    out.append(buf, res.ptr);
+}
+
+void append_float(std::string& out, float value) {
+    char buf[32];
+    const auto res = std::to_chars(buf, buf + sizeof buf, value + 0.0f);  // + 0: -0 becomes 0
     out.append(buf, res.ptr);
 }
 
@@ -63,6 +70,13 @@ void append_text_body(std::string& out, MeshView mesh, std::string_view vertex_p
 
 std::size_t text_size_guess(MeshView mesh) { return 64 + mesh.positions.size() * 60 + mesh.faces.size() * 24; }
 
+std::vector<Vec3> stored_normals(MeshView mesh) {
+    std::vector<Vec3> normals = vertex_normals(mesh);
+    for (Vec3& n : normals)
+        if (n == Vec3::Zero()) n = Vec3::UnitZ();
+    return normals;
+}
+
 std::string_view take_token(std::string_view& s) {
     std::size_t b = 0;
     while (b < s.size() && is_space(s[b])) ++b;
@@ -87,26 +101,71 @@ std::string excerpt(std::string_view s) {
     return out;
 }
 
+// from_chars takes no '+'; one is allowed here, but not "+-1" or "++1".
 bool parse_double(std::string_view tok, double& value) {
-    if (!tok.empty() && tok.front() == '+') tok.remove_prefix(1);
+    if (!tok.empty() && tok.front() == '+') {
+        tok.remove_prefix(1);
+        if (!tok.empty() && (tok.front() == '-' || tok.front() == '+')) return false;
+    }
     const auto res = std::from_chars(tok.data(), tok.data() + tok.size(), value);
     return res.ec == std::errc() && res.ptr == tok.data() + tok.size();
 }
 
 bool parse_long(std::string_view tok, long long& value) {
-    if (!tok.empty() && tok.front() == '+') tok.remove_prefix(1);
+    if (!tok.empty() && tok.front() == '+') {
+        tok.remove_prefix(1);
+        if (!tok.empty() && (tok.front() == '-' || tok.front() == '+')) return false;
+    }
     const auto res = std::from_chars(tok.data(), tok.data() + tok.size(), value);
     return res.ec == std::errc() && res.ptr == tok.data() + tok.size();
 }
+
+namespace {
+std::string limit_text() {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", kMaxMeshCoordinate);
+    return text;
+}
+}  // namespace
 
 double coordinate(std::string_view tok, const std::string& path, std::size_t line) {
     double v = 0;
     if (!parse_double(tok, v)) fail_line(path, line, "bad number " + excerpt(tok));
     if (!std::isfinite(v)) fail_line(path, line, "coordinate " + excerpt(tok) + " is not finite");
+    if (!(std::abs(v) <= kMaxMeshCoordinate))
+        fail_line(path, line, "coordinate " + excerpt(tok) + " is beyond the limit of ±" + limit_text());
     return v;
 }
 
-void add_polygon(std::vector<Face>& faces, const std::vector<int>& corners) {
+void check_position(const Vec3& p, const std::string& path, const std::string& what) {
+    if (!p.allFinite()) fail(path, what + " has a coordinate that is not finite");
+    if (!(p.cwiseAbs().maxCoeff() <= kMaxMeshCoordinate))
+        fail(path, what + " has a coordinate beyond the limit of ±" + limit_text());
+}
+
+void check_vertex_count(long long count, const std::string& path) {
+    if (count > kMaxMeshVertices)
+        fail(path, "more than " + std::to_string(kMaxMeshVertices) + " vertices (the limit for mesh files)");
+}
+
+void check_room(long double needed, std::size_t available, const std::string& path, const std::string& declared,
+                const char* hint) {
+    if (needed <= static_cast<long double>(available)) return;
+    char text[200];
+    std::snprintf(text, sizeof text, ", which need at least %.0Lf bytes, but only %zu follow (%s)", needed, available,
+                  hint);
+    fail(path, declared + text);
+}
+
+void add_polygon(std::vector<Face>& faces, const std::vector<int>& corners, const std::string& path,
+                 std::size_t line) {
+    const std::size_t added = corners.size() < 3 ? 0 : corners.size() - 2;
+    if (static_cast<long double>(faces.size()) + added > static_cast<long double>(kMaxMeshTriangles)) {
+        const std::string what = "more than " + std::to_string(kMaxMeshTriangles) +
+                                 " triangles (the limit for mesh files, after splitting polygons)";
+        if (line) fail_line(path, line, what);
+        fail(path, what);
+    }
     for (std::size_t i = 1; i + 1 < corners.size(); ++i)
         faces.push_back({corners[0], corners[i], corners[i + 1]});
 }

@@ -2,7 +2,7 @@
 // Internals shared by the per-format mesh files (mesh_io_*.cpp): error helpers,
 // a line/token reader for the text formats, number parsing and formatting.
 // Not part of the public interface (see mesh_io.hpp).
-#include "mesh.hpp"
+#include "mesh_io.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -29,6 +29,8 @@ std::string excerpt(std::string_view s);
 
 // 17 significant digits: enough to read back every double exactly.
 void append_double(std::string& out, double value);
+// The shortest text that reads back as this float (normals); -0 written as 0.
+void append_float(std::string& out, float value);
 void append_int(std::string& out, long long value);
 
 template <class T>
@@ -47,6 +49,9 @@ std::string header_comment(MeshView mesh);
 void append_text_body(std::string& out, MeshView mesh, std::string_view vertex_prefix, std::string_view face_prefix,
                       long long first_index);
 std::size_t text_size_guess(MeshView mesh);
+
+// vertex_normals() with "up" (+z) where a vertex has none: what files store.
+std::vector<Vec3> stored_normals(MeshView mesh);
 
 // ---------------------------------------------------------------- text parsing
 
@@ -91,25 +96,35 @@ std::vector<std::string_view> tokens(std::string_view s);
 bool parse_double(std::string_view tok, double& value);
 bool parse_long(std::string_view tok, long long& value);
 
-// A finite coordinate; throws naming the line otherwise.
+// A coordinate within ±kMaxMeshCoordinate; throws naming the line otherwise.
 double coordinate(std::string_view tok, const std::string& path, std::size_t line);
+// The same check for a vertex read from binary data ("<what>: ...").
+void check_position(const Vec3& p, const std::string& path, const std::string& what);
 
-// Counts in headers are only trusted this far for preallocation.
-constexpr long long kMaxReserve = 1 << 20;
+// Throws unless the mesh may hold `count` vertices (kMaxMeshVertices).
+void check_vertex_count(long long count, const std::string& path);
 
-// Appends polygon `corners` as a triangle fan (0,i,i+1).
-void add_polygon(std::vector<Face>& faces, const std::vector<int>& corners);
+// Throws, naming what a header declares and what the file can hold, when
+// `needed` bytes (the least that `declared` needs) exceed the `available` ones.
+void check_room(long double needed, std::size_t available, const std::string& path, const std::string& declared,
+                const char* hint = "a truncated file or a header that lies");
+
+// Appends polygon `corners` as a triangle fan (0,i,i+1); throws past
+// kMaxMeshTriangles. `line` 0: no line to name.
+void add_polygon(std::vector<Face>& faces, const std::vector<int>& corners, const std::string& path,
+                 std::size_t line);
 
 // ---------------------------------------------------------------- formats
 
 std::string obj_bytes(MeshView mesh);
 std::string off_bytes(MeshView mesh);
-std::string ply_bytes(MeshView mesh);
+std::string ply_bytes(MeshView mesh, const MeshWriteOptions& options);
 std::string stl_bytes(MeshView mesh);
 std::string glb_bytes(MeshView mesh, const std::string& path);
 
 MeshArrays read_obj(const std::string& path, std::string_view text);
 MeshArrays read_off(const std::string& path, std::string_view text);
 MeshArrays read_ply(const std::string& path, std::string_view text);
+MeshArrays read_stl(const std::string& path, std::string_view bytes);
 
 }  // namespace morphogen::mesh_io_detail

@@ -20,18 +20,10 @@ namespace {
 // is a proper rotation, so orientation (and outward normals) are kept.
 Vec3 to_y_up(const Vec3& p) { return {p.x(), p.z(), -p.y()}; }
 
-// Area-weighted vertex normals (smooth shading for viewers), already Y-up.
+// The shared smooth normals (vertex_normals), Y-up; "up" where undefined.
 std::vector<Vec3> smooth_normals_y_up(MeshView mesh) {
-    std::vector<Vec3> normals(mesh.positions.size(), Vec3::Zero());
-    for (const Face& f : mesh.faces) {
-        const Vec3 n = (mesh.positions[f[1]] - mesh.positions[f[0]])
-                           .cross(mesh.positions[f[2]] - mesh.positions[f[0]]);
-        for (int v : f) normals[v] += n;
-    }
-    for (Vec3& n : normals) {
-        const double len = n.norm();
-        n = len > 0 && std::isfinite(len) ? Vec3(to_y_up(n / len)) : Vec3(0, 1, 0);
-    }
+    std::vector<Vec3> normals = vertex_normals(mesh);
+    for (Vec3& n : normals) n = n == Vec3::Zero() ? Vec3(0, 1, 0) : to_y_up(n);
     return normals;
 }
 

@@ -1,4 +1,7 @@
 // OFF: the exact text record (writer) and a reader of OFF and its variants.
+// The writer stays plain OFF, without normals: NOFF (normals after each
+// vertex) is a variant that many simple OFF readers refuse (they want the
+// magic word "OFF") or misread (they take three numbers per vertex line).
 #include "mesh_io_detail.hpp"
 
 #include <limits>
@@ -43,15 +46,23 @@ MeshArrays read_off(const std::string& path, std::string_view text) {
     if (counts.size() < 2) fail_line(path, counts_line, "expected 'vertices faces [edges]'");
     const long long nv = off_count(counts[0], path, counts_line, "vertex");
     const long long nf = off_count(counts[1], path, counts_line, "face");
+    check_vertex_count(nv, path);
+    // One line per vertex ("x y z", 6 bytes at least) and per face ("3 a b c",
+    // 8 bytes): refuse counts the rest of the file cannot hold before looping.
+    check_room(6.0L * nv + 8.0L * nf - 1, text.size() - reader.offset(), path,
+               "header line " + std::to_string(counts_line) + " declares " + std::to_string(nv) + " vertices and " +
+                   std::to_string(nf) + " faces");
 
     MeshArrays mesh;
-    mesh.positions.reserve(static_cast<std::size_t>(std::min(nv, kMaxReserve)));  // a header may lie
+    mesh.positions.reserve(static_cast<std::size_t>(nv));  // bounded by the file size (checked above)
     for (long long i = 0; i < nv; ++i) {
         if (!reader.next_nonblank(line))
             fail(path, "truncated: found " + std::to_string(i) + " of " + std::to_string(nv) + " vertices");
         const std::size_t ln = reader.line_number();
-        const auto t = tokens(line);
-        if (t.size() < 3) fail_line(path, ln, "vertex needs 3 coordinates, found " + std::to_string(t.size()));
+        std::string_view t[3];
+        for (int k = 0; k < 3; ++k)
+            if ((t[k] = take_token(line)).empty())
+                fail_line(path, ln, "vertex needs 3 coordinates, found " + std::to_string(k));
         mesh.positions.emplace_back(coordinate(t[0], path, ln), coordinate(t[1], path, ln),
                                     coordinate(t[2], path, ln));
     }
@@ -60,21 +71,25 @@ MeshArrays read_off(const std::string& path, std::string_view text) {
         if (!reader.next_nonblank(line))
             fail(path, "truncated: found " + std::to_string(i) + " of " + std::to_string(nf) + " faces");
         const std::size_t ln = reader.line_number();
-        const auto t = tokens(line);
+        const std::string_view count = take_token(line);
         long long n = 0;
-        if (!parse_long(t[0], n) || n < 0) fail_line(path, ln, "bad corner count " + excerpt(t[0]));
+        if (!parse_long(count, n) || n < 0) fail_line(path, ln, "bad corner count " + excerpt(count));
         if (n < 3) fail_line(path, ln, "face with " + std::to_string(n) + " corners (needs at least 3)");
-        if (static_cast<long long>(t.size()) - 1 < n)
-            fail_line(path, ln, "face lists " + std::to_string(t.size() - 1) + " of its " + std::to_string(n) + " corners");
+        // Each corner takes two bytes at least: a count beyond the line is a lie.
+        if (n > static_cast<long long>(line.size() / 2) + 1)
+            fail_line(path, ln, "face declares " + std::to_string(n) + " corners, more than its line can hold");
         corners.clear();
-        for (long long k = 1; k <= n; ++k) {  // tokens after the n indices (colours) are ignored
+        for (long long k = 0; k < n; ++k) {  // tokens after the n indices (colours) are ignored
+            const std::string_view tok = take_token(line);
+            if (tok.empty())
+                fail_line(path, ln, "face lists " + std::to_string(k) + " of its " + std::to_string(n) + " corners");
             long long v = 0;
-            if (!parse_long(t[k], v)) fail_line(path, ln, "bad vertex index " + excerpt(t[k]));
+            if (!parse_long(tok, v)) fail_line(path, ln, "bad vertex index " + excerpt(tok));
             if (v < 0 || v >= nv)
                 fail_line(path, ln, "vertex index " + std::to_string(v) + " out of range [0, " + std::to_string(nv) + ")");
             corners.push_back(static_cast<int>(v));
         }
-        add_polygon(mesh.faces, corners);
+        add_polygon(mesh.faces, corners, path, ln);
     }
     return mesh;
 }

@@ -1,4 +1,5 @@
-// PLY: binary little-endian writer; reader of ascii and both binary encodings.
+// PLY: binary little-endian writer (float32 or double, with normals); reader
+// of ascii and both binary encodings.
 #include "mesh_io_detail.hpp"
 
 #include <cstdint>
@@ -39,6 +40,26 @@ std::size_t ply_size(PlyType t) {
 
 bool ply_integral(PlyType t) { return t != PlyType::f32 && t != PlyType::f64; }
 
+// Range of an integer type (what an ascii value of that type may hold).
+long long ply_min(PlyType t) {
+    switch (t) {
+        case PlyType::i8: return -128;
+        case PlyType::i16: return -32768;
+        case PlyType::i32: return std::numeric_limits<std::int32_t>::min();
+        default: return 0;
+    }
+}
+long long ply_max(PlyType t) {
+    switch (t) {
+        case PlyType::i8: return 127;
+        case PlyType::u8: return 255;
+        case PlyType::i16: return 32767;
+        case PlyType::u16: return 65535;
+        case PlyType::i32: return std::numeric_limits<std::int32_t>::max();
+        default: return std::numeric_limits<std::uint32_t>::max();
+    }
+}
+
 struct PlyProperty {
     std::string name;
     PlyType type = PlyType::f32;  // item type for lists
@@ -49,6 +70,7 @@ struct PlyProperty {
 struct PlyElement {
     std::string name;
     long long count = 0;
+    std::size_t line = 0;  // of its header line
     std::vector<PlyProperty> properties;
 };
 
@@ -60,6 +82,16 @@ struct PlyHeader {
     std::size_t body_offset = 0;  // byte offset of the data after end_header
     std::size_t body_line = 0;    // line number of the first data line (ascii)
 };
+
+// An element with entries but no properties would take no bytes per entry:
+// its count could never be checked against the file, so it is refused.
+void close_element(const PlyHeader& header, const std::string& path) {
+    if (header.elements.empty()) return;
+    const PlyElement& e = header.elements.back();
+    if (e.count > 0 && e.properties.empty())
+        fail_line(path, e.line, "element " + excerpt(e.name) + " declares " + std::to_string(e.count) +
+                                    " entries but no properties");
+}
 
 PlyHeader read_ply_header(const std::string& path, std::string_view text) {
     PlyHeader header;
@@ -82,10 +114,16 @@ PlyHeader read_ply_header(const std::string& path, std::string_view text) {
             have_format = true;
         } else if (t[0] == "element") {
             if (t.size() < 3) fail_line(path, ln, "expected 'element NAME COUNT'");
+            close_element(header, path);
             PlyElement e;
             e.name = std::string(t[1]);
+            e.line = ln;
             if (!parse_long(t[2], e.count) || e.count < 0 || e.count > std::numeric_limits<int>::max())
                 fail_line(path, ln, "bad element count " + excerpt(t[2]));
+            for (const PlyElement& other : header.elements)
+                if (other.name == e.name)
+                    fail_line(path, ln, "element " + excerpt(e.name) + " declared twice (first on line " +
+                                            std::to_string(other.line) + ")");
             header.elements.push_back(std::move(e));
         } else if (t[0] == "property") {
             if (header.elements.empty()) fail_line(path, ln, "property before any element");
@@ -107,6 +145,7 @@ PlyHeader read_ply_header(const std::string& path, std::string_view text) {
             fail_line(path, ln, "unknown header keyword " + excerpt(t[0]));
         }
     }
+    close_element(header, path);
     if (!have_format) fail(path, "header has no format line");
     header.body_offset = reader.offset();
     header.body_line = reader.line_number() + 1;
@@ -125,6 +164,16 @@ public:
         return format_ == PlyFormat::ascii ? ascii_value(type, what, index) : binary_value(type, what, index);
     }
 
+    // Bytes not read yet, and the least one value of `type` takes: binary
+    // its size; ascii one character and a separator (the last one none).
+    std::size_t remaining() const {
+        return format_ == PlyFormat::ascii ? text_.size() - reader_.offset() + line_.size() : text_.size() - pos_;
+    }
+    long double least_bytes(PlyType type, long double values) const {
+        if (values <= 0) return 0;
+        return format_ == PlyFormat::ascii ? 2 * values - 1 : values * static_cast<long double>(ply_size(type));
+    }
+
 private:
     double ascii_value(PlyType type, const char* what, long long index) {
         std::string_view tok = take_token(line_);
@@ -138,6 +187,9 @@ private:
         if (ply_integral(type)) {
             long long i = 0;
             if (!parse_long(tok, i)) fail_line(path_, ln, std::string("bad integer ") + excerpt(tok) + " in " + what);
+            if (i < ply_min(type) || i > ply_max(type))
+                fail_line(path_, ln, std::string("integer ") + excerpt(tok) + " in " + what +
+                                         " is out of range for its type");
             v = static_cast<double>(i);
         } else if (!parse_double(tok, v)) {
             fail_line(path_, ln, std::string("bad number ") + excerpt(tok) + " in " + what);
@@ -192,17 +244,26 @@ int property_index(const PlyElement& e, std::initializer_list<std::string_view> 
 
 }  // namespace
 
-std::string ply_bytes(MeshView mesh) {
+// float32 unless options.ply_double: the normals take the same type.
+std::string ply_bytes(MeshView mesh, const MeshWriteOptions& options) {
+    const std::string type = options.ply_double ? "double" : "float";
     std::string out = "ply\nformat binary_little_endian 1.0\ncomment " + header_comment(mesh) +
-                      "\nelement vertex " + std::to_string(mesh.positions.size()) +
-                      "\nproperty double x\nproperty double y\nproperty double z\nelement face " +
-                      std::to_string(mesh.faces.size()) +
-                      "\nproperty list uchar int vertex_indices\nend_header\n";
-    out.reserve(out.size() + mesh.positions.size() * 24 + mesh.faces.size() * 13);
-    for (const Vec3& p : mesh.positions) {
-        append_le(out, p.x());
-        append_le(out, p.y());
-        append_le(out, p.z());
+                      "\nelement vertex " + std::to_string(mesh.positions.size()) + "\n";
+    for (const char* name : {"x", "y", "z", "nx", "ny", "nz"}) out += "property " + type + " " + name + "\n";
+    out += "element face " + std::to_string(mesh.faces.size()) +
+           "\nproperty list uchar int vertex_indices\nend_header\n";
+    const std::size_t scalar = options.ply_double ? 8 : 4;
+    out.reserve(out.size() + mesh.positions.size() * 6 * scalar + mesh.faces.size() * 13);
+    const std::vector<Vec3> normals = stored_normals(mesh);
+    const auto put = [&](const Vec3& v) {
+        for (int k = 0; k < 3; ++k) {
+            if (options.ply_double) append_le(out, v[k]);
+            else append_le(out, static_cast<float>(v[k]));
+        }
+    };
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        put(mesh.positions[i]);
+        put(normals[i]);
     }
     for (const Face& f : mesh.faces) {
         append_le(out, std::uint8_t{3});
@@ -227,23 +288,45 @@ MeshArrays read_ply(const std::string& path, std::string_view text) {
         if (xyz[k] < 0 || vertex->properties[xyz[k]].is_list)
             fail(path, std::string("vertex element has no scalar property '") + name[k] + "'");
     }
+    const PlyElement* face = find("face");
     int indices = -1;
-    if (const PlyElement* face = find("face")) {
+    if (face) {
         indices = property_index(*face, {"vertex_indices", "vertex_index"});
         if (indices < 0 || !face->properties[indices].is_list)
             fail(path, "face element has no list property 'vertex_indices'");
         if (!ply_integral(face->properties[indices].type))
             fail(path, "vertex_indices must have an integer item type");
     }
+    check_vertex_count(vertex->count, path);
+
+    PlySource src(path, text, header);
+    // Every count the header declares, against the bytes after it, before
+    // anything is allocated or looped over (lists count as empty here).
+    {
+        long double needed = 0;
+        long double values = 0;
+        for (const PlyElement& e : header.elements) {
+            long double entry = 0;
+            for (const PlyProperty& p : e.properties) entry += src.least_bytes(p.is_list ? p.count_type : p.type, 1);
+            needed += entry * e.count;
+            values += static_cast<long double>(e.properties.size()) * e.count;
+        }
+        if (header.format == PlyFormat::ascii) needed = src.least_bytes(PlyType::u8, values);
+        std::string declared = "header declares";
+        std::size_t named = 0;
+        for (const PlyElement& e : header.elements)
+            if (e.count > 0 && named++ < 4) declared += (named > 1 ? ", " : " ") + std::to_string(e.count) + " " + e.name;
+        if (named > 4) declared += " and " + std::to_string(named - 4) + " more elements";
+        check_room(needed, src.remaining(), path, declared);
+    }
 
     MeshArrays mesh;
-    PlySource src(path, text, header);
+    mesh.positions.reserve(static_cast<std::size_t>(vertex->count));  // bounded by the file size (checked above)
     std::vector<int> corners;
     for (const PlyElement& e : header.elements) {
         const bool is_vertex = &e == vertex;
-        const bool is_face = e.name == "face" && indices >= 0;
+        const bool is_face = &e == face;
         const std::string what = e.name;
-        if (is_vertex) mesh.positions.reserve(static_cast<std::size_t>(std::min(e.count, kMaxReserve)));
         for (long long i = 0; i < e.count; ++i) {
             Vec3 p = Vec3::Zero();
             for (int k = 0; k < static_cast<int>(e.properties.size()); ++k) {
@@ -255,29 +338,32 @@ MeshArrays read_ply(const std::string& path, std::string_view text) {
                             if (xyz[c] == k) p[c] = v;
                     continue;
                 }
-                const double n = src.value(prop.count_type, what.c_str(), i);
+                const double n = src.value(prop.count_type, what.c_str(), i);  // an integer type: exact
                 if (n < 0) fail(path, what + " " + std::to_string(i) + ": negative list length");
+                const auto items = static_cast<long long>(n);
+                check_room(src.least_bytes(prop.type, n), src.remaining(), path,
+                           what + " " + std::to_string(i) + " declares a list of " + std::to_string(items) + " items",
+                           "a truncated file or a count that lies");
                 const bool keep = is_face && k == indices;
                 if (keep) {
                     if (n < 3)
-                        fail(path, "face " + std::to_string(i) + " has " + std::to_string(static_cast<long long>(n)) +
+                        fail(path, "face " + std::to_string(i) + " has " + std::to_string(items) +
                                        " corners (needs at least 3)");
                     corners.clear();
                 }
-                for (long long j = 0; j < static_cast<long long>(n); ++j) {
-                    const double v = src.value(prop.type, what.c_str(), i);
+                for (long long j = 0; j < items; ++j) {
+                    const double v = src.value(prop.type, what.c_str(), i);  // an integer type: exact
                     if (!keep) continue;
-                    if (v < 0 || v >= static_cast<double>(vertex->count))
+                    if (!(v >= 0 && v < static_cast<double>(vertex->count)))
                         fail(path, "face " + std::to_string(i) + ": vertex index " +
                                        std::to_string(static_cast<long long>(v)) + " out of range [0, " +
                                        std::to_string(vertex->count) + ")");
                     corners.push_back(static_cast<int>(v));
                 }
-                if (keep) add_polygon(mesh.faces, corners);
+                if (keep) add_polygon(mesh.faces, corners, path, 0);
             }
             if (is_vertex) {
-                if (!p.allFinite())
-                    fail(path, "vertex " + std::to_string(i) + " has a coordinate that is not finite");
+                check_position(p, path, "vertex " + std::to_string(i));
                 mesh.positions.push_back(p);
             }
         }

@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <tiny_gltf.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -34,7 +35,7 @@ MeshArrays awkward_cube() {
         m.positions.emplace_back((i & 1 ? 1.0 : 0.0) + jitter(rng) / 3.0, (i & 2 ? 1.0 : 0.0) + 1e-17 * i,
                                  (i & 4 ? 1.0 : 0.0) + std::nextafter(0.1, 1.0) * 1e-6 * i);
     m.positions[3].x() = -1.2345678901234567e-300;  // tiny, subnormal-adjacent magnitudes too
-    m.positions[5].y() = 6.0221408570000002e+23;
+    m.positions[5].y() = 602214085.70000005;  // near the coordinate limit (1e9)
     m.faces = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}, {5, 7, 6}, {0, 1, 4}, {1, 5, 4},
                {2, 6, 3}, {3, 6, 7}, {0, 4, 2}, {2, 4, 6}, {1, 3, 5}, {3, 7, 5}};
     return m;
@@ -64,6 +65,11 @@ T load_le(const std::string& bytes, std::size_t offset) {
     return v;  // test hosts are little-endian
 }
 
+std::string write_and_name(const MeshArrays& m, const std::string& path) {
+    write_mesh(m.view(), path);
+    return path;
+}
+
 // Reading `path` must throw IoError whose message names the file and contains `what`.
 void require_read_error(const std::string& path, const std::string& what) {
     try {
@@ -89,23 +95,43 @@ TEST_CASE("mesh format is chosen by extension, case-insensitively", "[mesh_io]")
     CHECK_THROWS_WITH(mesh_format_from_path("noext"), Catch::Contains("noext"));
 }
 
-TEST_CASE("OBJ, PLY and OFF round trips are bit-exact and keep order", "[mesh_io]") {
+TEST_CASE("OBJ, PLY (doubles) and OFF round trips are bit-exact and keep order", "[mesh_io]") {
     TempDir tmp;
     const MeshArrays cube = awkward_cube();
+    MeshWriteOptions doubles;
+    doubles.ply_double = true;
     for (const char* name : {"m.obj", "m.ply", "m.off"}) {
         SECTION(name) {
             const std::string path = tmp.file(name);
-            write_mesh(cube.view(), path);
+            write_mesh(cube.view(), path, doubles);
             require_identical(cube, read_mesh(path));
             // Writing what was read gives the same bytes.
             const std::string again = tmp.file(std::string("again_") + name);
-            write_mesh(read_mesh(path).view(), again);
+            write_mesh(read_mesh(path).view(), again, doubles);
             CHECK(slurp(path) == slurp(again));
         }
     }
 }
 
-TEST_CASE("OBJ starts with a header comment and writes 17 significant digits", "[mesh_io]") {
+TEST_CASE("float32 PLY and STL read back as the float-rounded mesh", "[mesh_io]") {
+    TempDir tmp;
+    const MeshArrays cube = awkward_cube();
+    MeshArrays rounded = cube;
+    for (Vec3& p : rounded.positions) p = p.cast<float>().cast<double>();
+    require_identical(rounded, read_mesh(write_and_name(cube, tmp.file("f.ply"))));
+    // STL has no shared vertices: the reader welds equal corners back, in
+    // order of first appearance, which is the original order for this cube.
+    const MeshArrays stl = read_mesh(write_and_name(cube, tmp.file("f.stl")));
+    REQUIRE(stl.faces.size() == cube.faces.size());
+    REQUIRE(stl.positions.size() == cube.positions.size());
+    for (std::size_t f = 0; f < cube.faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            INFO("face " << f << " corner " << k);
+            CHECK(stl.positions[stl.faces[f][k]] == rounded.positions[cube.faces[f][k]]);
+        }
+}
+
+TEST_CASE("OBJ writes 17 significant digits, smooth normals and v//vn faces", "[mesh_io]") {
     TempDir tmp;
     MeshArrays m;
     m.positions = {{0.1, 1.0, -2.5}, {1.0 / 3.0, 0, 1e-20}, {0, 1, 0}};
@@ -116,20 +142,68 @@ TEST_CASE("OBJ starts with a header comment and writes 17 significant digits", "
     CHECK(text.rfind("# ", 0) == 0);
     CHECK(text.find("v 0.10000000000000001 1 -2.5\n") != std::string::npos);
     CHECK(text.find("v 0.33333333333333331 0 9.9999999999999995e-21\n") != std::string::npos);
-    CHECK(text.find("\nf 1 2 3\n") != std::string::npos);
+    CHECK(text.find("\nf 1//1 2//2 3//3\n") != std::string::npos);
+    // One vn per vertex (here all the face's unit normal), shortest float digits.
+    CHECK(std::count(text.begin(), text.end(), '\n') == 1 + 3 + 3 + 1);
+    const Vec3 n = vertex_normals(m.view())[0];
+    std::istringstream lines(text);
+    int normals = 0;
+    for (std::string line; std::getline(lines, line);) {
+        if (line.rfind("vn ", 0) != 0) continue;
+        ++normals;
+        std::istringstream values(line.substr(3));
+        float x = 0, y = 0, z = 0;
+        values >> x >> y >> z;
+        CHECK(x == static_cast<float>(n.x()));
+        CHECK(y == static_cast<float>(n.y()));
+        CHECK(z == static_cast<float>(n.z()));
+        CHECK(line.size() < 3 + 3 * 16);  // float digits, not 17
+    }
+    CHECK(normals == 3);
+    CHECK(read_mesh(path).faces == m.faces);
 }
 
-TEST_CASE("PLY is binary little-endian with double vertices", "[mesh_io]") {
+TEST_CASE("vertex normals are unit, area-weighted, and zero where undefined", "[mesh_io]") {
+    MeshArrays m = awkward_cube();
+    for (const Vec3& n : vertex_normals(m.view())) CHECK(n.norm() == Approx(1.0).epsilon(1e-12));
+    // Corner 0 of the near-unit cube points out along (-1,-1,-1).
+    CHECK(vertex_normals(m.view())[0].dot(Vec3(-1, -1, -1).normalized()) > 0.99);
+    m.positions.emplace_back(5, 5, 5);  // on no face
+    m.positions.emplace_back(1e300, 1e300, 1e300);
+    CHECK(vertex_normals(m.view())[8] == Vec3::Zero());
+    MeshArrays flat;
+    flat.positions = {{0, 0, 0}, {1, 0, 0}, {2, 0, 0}};  // zero area
+    flat.faces = {{0, 1, 2}};
+    for (const Vec3& n : vertex_normals(flat.view())) CHECK(n == Vec3::Zero());
+}
+
+TEST_CASE("PLY is binary little-endian, float32 by default, doubles on request, with normals", "[mesh_io]") {
     TempDir tmp;
     const MeshArrays cube = awkward_cube();
-    const std::string path = tmp.file("m.ply");
-    write_mesh(cube.view(), path);
-    const std::string bytes = slurp(path);
-    const std::string end = "end_header\n";
-    const auto body = bytes.find(end) + end.size();
-    CHECK(bytes.rfind("ply\nformat binary_little_endian 1.0\n", 0) == 0);
-    CHECK(bytes.size() == body + 8 * 24 + 12 * 13);
-    CHECK(load_le<double>(bytes, body) == cube.positions[0].x());
+    const std::vector<Vec3> normals = vertex_normals(cube.view());
+    for (const bool doubles : {false, true}) {
+        INFO("doubles " << doubles);
+        MeshWriteOptions options;
+        options.ply_double = doubles;
+        const std::string path = tmp.file(doubles ? "d.ply" : "f.ply");
+        write_mesh(cube.view(), path, options);
+        const std::string bytes = slurp(path);
+        const std::string end = "end_header\n";
+        const auto body = bytes.find(end) + end.size();
+        CHECK(bytes.rfind("ply\nformat binary_little_endian 1.0\n", 0) == 0);
+        const std::string type = doubles ? "double" : "float";
+        CHECK(bytes.find("property " + type + " x\nproperty " + type + " y\nproperty " + type + " z\nproperty " +
+                         type + " nx\nproperty " + type + " ny\nproperty " + type + " nz\n") != std::string::npos);
+        const std::size_t scalar = doubles ? 8 : 4;
+        CHECK(bytes.size() == body + 8 * 6 * scalar + 12 * 13);
+        if (doubles) {
+            CHECK(load_le<double>(bytes, body) == cube.positions[0].x());
+            CHECK(load_le<double>(bytes, body + 24) == normals[0].x());
+        } else {
+            CHECK(load_le<float>(bytes, body) == static_cast<float>(cube.positions[0].x()));
+            CHECK(load_le<float>(bytes, body + 12) == static_cast<float>(normals[0].x()));
+        }
+    }
 }
 
 TEST_CASE("STL is binary with one 50-byte record and a unit normal per face", "[mesh_io]") {
@@ -353,7 +427,8 @@ TEST_CASE("every malformed file gives an IoError naming the file and the problem
     require_read_error(tmp.path.string() + "/.obj", "");
     fs::create_directories(tmp.file("dir.obj"));
     require_read_error(tmp.file("dir.obj"), "directory");
-    require_read_error(tmp.write("x.stl", ""), "not supported");
+    require_read_error(tmp.write("x.stl", ""), "not an STL file");
+    require_read_error(tmp.write("x.glb", ""), "reading GLB is not supported");
 
     // OBJ
     require_read_error(tmp.write("num.obj", "v 0 0 0\nv 1 x 0\n"), ":2: bad number 'x'");
@@ -369,12 +444,14 @@ TEST_CASE("every malformed file gives an IoError naming the file and the problem
     require_read_error(tmp.write("empty.off", ""), "empty file");
     require_read_error(tmp.write("magic.off", "PLY\n3 1 0\n"), ":1: not an OFF file");
     require_read_error(tmp.write("counts.off", "OFF\n3 x 0\n"), ":2: bad face count 'x'");
-    require_read_error(tmp.write("trv.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"), "truncated: found 2 of 3 vertices");
-    require_read_error(tmp.write("trf.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n"), "truncated: found 0 of 1 faces");
+    require_read_error(tmp.write("trv.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n"), "header line 2 declares 3 vertices and 1 faces, which need at least 25 bytes, but only 12 follow");
+    const std::string pad = "# padding: the counts fit the bytes, so the reader gets to the defect\n";
+    require_read_error(tmp.write("trv2.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n" + pad), "truncated: found 2 of 3 vertices");
+    require_read_error(tmp.write("trf.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n" + pad), "truncated: found 0 of 1 faces");
     require_read_error(tmp.write("num.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 one 0\n3 0 1 2\n"), ":5: bad number 'one'");
     require_read_error(tmp.write("range.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n"), ":6: vertex index 3 out of range");
-    require_read_error(tmp.write("two.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n"), ":6: face with 2 corners");
-    require_read_error(tmp.write("few.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n"), "face lists 2 of its 3 corners");
+    require_read_error(tmp.write("two.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2 0 1\n" + pad), ":6: face with 2 corners");
+    require_read_error(tmp.write("few.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1\n" + pad), "face lists 2 of its 3 corners");
 
     // PLY
     require_read_error(tmp.write("magic.ply", "solid\n"), "not a PLY file");
@@ -389,8 +466,9 @@ TEST_CASE("every malformed file gives an IoError naming the file and the problem
     require_read_error(tmp.write("tra.ply", ply_head + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n"), "truncated");
     require_read_error(tmp.write("range.ply", ply_head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n"), "vertex index 5 out of range");
     require_read_error(tmp.write("two.ply", ply_head + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n"), "face 0 has 2 corners");
-    require_read_error(tmp.write("trb.ply", bin_head + std::string(3 * 24, '\0') + "\x03" + std::string(5, '\0')), "truncated binary data in face 0");
-    require_read_error(tmp.write("trv.ply", bin_head + std::string(30, '\0')), "truncated binary data in vertex 1");
+    require_read_error(tmp.write("trb.ply", bin_head + std::string(3 * 24, '\0') + "\x03" + std::string(5, '\0')), "face 0 declares a list of 3 items, which need at least 12 bytes, but only 5 follow");
+    require_read_error(tmp.write("trv.ply", bin_head + std::string(30, '\0')),
+                       "header declares 3 vertex, 1 face, which need at least 73 bytes, but only 30 follow");
     require_read_error(tmp.write("fidx.ply", "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n"
                                              "property float y\nproperty float z\nelement face 0\n"
                                              "property list uchar float vertex_indices\nend_header\n"),
