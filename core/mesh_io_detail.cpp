@@ -18,6 +18,11 @@ namespace morphogen::mesh_io_detail {
     throw IoError(path + ":" + std::to_string(line) + ": " + what);
 }
 
+[[noreturn]] void fail_at(const std::string& path, std::size_t line, const std::string& what) {
+    if (line) fail_line(path, line, what);
+    fail(path, what);
+}
+
 std::string lower(std::string s) {
     std::transform(s.begin(), s.end(), s.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
@@ -121,10 +126,10 @@ bool parse_long(std::string_view tok, long long& value) {
 }
 
 namespace {
+// kMaxMeshCoordinate as written in docs and messages.
 std::string limit_text() {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", kMaxMeshCoordinate);
-    return text;
+    static_assert(kMaxMeshCoordinate == 1e9, "update the text below");
+    return "1e9";
 }
 }  // namespace
 
@@ -137,10 +142,10 @@ double coordinate(std::string_view tok, const std::string& path, std::size_t lin
     return v;
 }
 
-void check_position(const Vec3& p, const std::string& path, const std::string& what) {
-    if (!p.allFinite()) fail(path, what + " has a coordinate that is not finite");
+void check_position(const Vec3& p, const std::string& path, const std::string& what, std::size_t line) {
+    if (!p.allFinite()) fail_at(path, line, what + " has a coordinate that is not finite");
     if (!(p.cwiseAbs().maxCoeff() <= kMaxMeshCoordinate))
-        fail(path, what + " has a coordinate beyond the limit of ±" + limit_text());
+        fail_at(path, line, what + " has a coordinate beyond the limit of ±" + limit_text());
 }
 
 void check_vertex_count(long long count, const std::string& path) {
@@ -149,22 +154,20 @@ void check_vertex_count(long long count, const std::string& path) {
 }
 
 void check_room(long double needed, std::size_t available, const std::string& path, const std::string& declared,
-                const char* hint) {
+                const char* hint, std::size_t line) {
     if (needed <= static_cast<long double>(available)) return;
     char text[200];
     std::snprintf(text, sizeof text, ", which need at least %.0Lf bytes, but only %zu follow (%s)", needed, available,
                   hint);
-    fail(path, declared + text);
+    fail_at(path, line, declared + text);
 }
 
 void add_polygon(std::vector<Face>& faces, const std::vector<int>& corners, const std::string& path,
                  std::size_t line) {
     const std::size_t added = corners.size() < 3 ? 0 : corners.size() - 2;
     if (static_cast<long double>(faces.size()) + added > static_cast<long double>(kMaxMeshTriangles)) {
-        const std::string what = "more than " + std::to_string(kMaxMeshTriangles) +
-                                 " triangles (the limit for mesh files, after splitting polygons)";
-        if (line) fail_line(path, line, what);
-        fail(path, what);
+        fail_at(path, line, "more than " + std::to_string(kMaxMeshTriangles) +
+                                " triangles (the limit for mesh files, after splitting polygons)");
     }
     for (std::size_t i = 1; i + 1 < corners.size(); ++i)
         faces.push_back({corners[0], corners[i], corners[i + 1]});

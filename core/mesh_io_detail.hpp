@@ -20,6 +20,8 @@ static_assert(std::endian::native == std::endian::little || std::endian::native 
 // Throw IoError("<path>: <what>") / IoError("<path>:<line>: <what>").
 [[noreturn]] void fail(const std::string& path, const std::string& what);
 [[noreturn]] void fail_line(const std::string& path, std::size_t line, const std::string& what);
+// fail_line, or fail where `line` is 0 (binary data has no lines).
+[[noreturn]] void fail_at(const std::string& path, std::size_t line, const std::string& what);
 
 std::string lower(std::string s);
 // A token quoted for an error message, cut to 40 characters.
@@ -99,7 +101,7 @@ bool parse_long(std::string_view tok, long long& value);
 // A coordinate within ±kMaxMeshCoordinate; throws naming the line otherwise.
 double coordinate(std::string_view tok, const std::string& path, std::size_t line);
 // The same check for a vertex read from binary data ("<what>: ...").
-void check_position(const Vec3& p, const std::string& path, const std::string& what);
+void check_position(const Vec3& p, const std::string& path, const std::string& what, std::size_t line = 0);
 
 // Throws unless the mesh may hold `count` vertices (kMaxMeshVertices).
 void check_vertex_count(long long count, const std::string& path);
@@ -107,7 +109,7 @@ void check_vertex_count(long long count, const std::string& path);
 // Throws, naming what a header declares and what the file can hold, when
 // `needed` bytes (the least that `declared` needs) exceed the `available` ones.
 void check_room(long double needed, std::size_t available, const std::string& path, const std::string& declared,
-                const char* hint = "a truncated file or a header that lies");
+                const char* hint = "a truncated file or a header that lies", std::size_t line = 0);
 
 // Appends polygon `corners` as a triangle fan (0,i,i+1); throws past
 // kMaxMeshTriangles. `line` 0: no line to name.

@@ -164,6 +164,9 @@ public:
         return format_ == PlyFormat::ascii ? ascii_value(type, what, index) : binary_value(type, what, index);
     }
 
+    // The line of the last value read (ascii), 0 for binary data.
+    std::size_t line() const { return format_ == PlyFormat::ascii ? reader_.line_number() : 0; }
+
     // Bytes not read yet, and the least one value of `type` takes: binary
     // its size; ascii one character and a separator (the last one none).
     std::size_t remaining() const {
@@ -339,15 +342,15 @@ MeshArrays read_ply(const std::string& path, std::string_view text) {
                     continue;
                 }
                 const double n = src.value(prop.count_type, what.c_str(), i);  // an integer type: exact
-                if (n < 0) fail(path, what + " " + std::to_string(i) + ": negative list length");
+                if (n < 0) fail_at(path, src.line(), what + " " + std::to_string(i) + ": negative list length");
                 const auto items = static_cast<long long>(n);
                 check_room(src.least_bytes(prop.type, n), src.remaining(), path,
                            what + " " + std::to_string(i) + " declares a list of " + std::to_string(items) + " items",
-                           "a truncated file or a count that lies");
+                           "a truncated file or a count that lies", src.line());
                 const bool keep = is_face && k == indices;
                 if (keep) {
                     if (n < 3)
-                        fail(path, "face " + std::to_string(i) + " has " + std::to_string(items) +
+                        fail_at(path, src.line(), "face " + std::to_string(i) + " has " + std::to_string(items) +
                                        " corners (needs at least 3)");
                     corners.clear();
                 }
@@ -355,15 +358,15 @@ MeshArrays read_ply(const std::string& path, std::string_view text) {
                     const double v = src.value(prop.type, what.c_str(), i);  // an integer type: exact
                     if (!keep) continue;
                     if (!(v >= 0 && v < static_cast<double>(vertex->count)))
-                        fail(path, "face " + std::to_string(i) + ": vertex index " +
+                        fail_at(path, src.line(), "face " + std::to_string(i) + ": vertex index " +
                                        std::to_string(static_cast<long long>(v)) + " out of range [0, " +
                                        std::to_string(vertex->count) + ")");
                     corners.push_back(static_cast<int>(v));
                 }
-                if (keep) add_polygon(mesh.faces, corners, path, 0);
+                if (keep) add_polygon(mesh.faces, corners, path, src.line());
             }
             if (is_vertex) {
-                check_position(p, path, "vertex " + std::to_string(i));
+                check_position(p, path, "vertex " + std::to_string(i), src.line());
                 mesh.positions.push_back(p);
             }
         }

@@ -2,12 +2,14 @@
 // clear IoError naming the file for every malformed input.
 #include "support/temp_dir.hpp"
 #include "errors.hpp"
+#include "mesh.hpp"
 #include "mesh_io.hpp"
 
 #include <catch2/catch.hpp>
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -473,4 +475,173 @@ TEST_CASE("every malformed file gives an IoError naming the file and the problem
                                              "property float y\nproperty float z\nelement face 0\n"
                                              "property list uchar float vertex_indices\nend_header\n"),
                        "integer item type");
+}
+
+namespace {
+
+const fs::path corpus_dir = fs::path(MORPHOGEN_SOURCE_DIR) / "tests" / "corpus" / "mesh";
+
+std::string le_float(float v) {
+    std::string s(4, '\0');
+    std::memcpy(s.data(), &v, 4);
+    return s;
+}
+
+std::string le_u32(std::uint32_t v) {
+    std::string s(4, '\0');
+    std::memcpy(s.data(), &v, 4);
+    return s;
+}
+
+std::string stl_facet(const Vec3& a, const Vec3& b, const Vec3& c) {
+    std::ostringstream s;
+    s << "facet normal 0 0 0\n outer loop\n";
+    for (const Vec3* p : {&a, &b, &c}) s << "  vertex " << p->x() << ' ' << p->y() << ' ' << p->z() << '\n';
+    s << " endloop\nendfacet\n";
+    return s.str();
+}
+
+}  // namespace
+
+TEST_CASE("hostile mesh corpus: each file is refused at once with its defect, naming the file", "[mesh_io][corpus]") {
+    // File -> what the message must say (exit 3 via IoError). Files named
+    // invalid_mesh_* read fine and are refused later (score: exit 4).
+    const std::pair<const char*, const char*> cases[] = {
+        {"lying_ply_header.ply", ":3: element 'e0' declares 2147483647 entries but no properties"},
+        {"lying_ply_header_binary.ply", "which need at least 107374182386 bytes, but only 36 follow"},
+        {"lying_ply_list_length.ply", "face 0 declares a list of 4294967295 items"},
+        {"ply_second_face_element_nan_index.ply", ":9: element 'face' declared twice"},
+        {"ply_float_index_list.ply", "vertex_indices must have an integer item type"},
+        {"ply_nan_coordinate_binary.ply", "vertex 1 has a coordinate that is not finite"},
+        {"ply_count_out_of_type_range.ply", ":13: integer '300' in face is out of range for its type"},
+        {"ply_negative_index.ply", ":13: face 0: vertex index -2147483648 out of range [0, 3)"},
+        {"ply_coordinate_1e200.ply", ":10: vertex 0 has a coordinate beyond the limit of ±1e9"},
+        {"obj_coordinates_1e200.obj", ":1: coordinate '1e200' is beyond the limit of ±1e9"},
+        {"obj_nan_coordinate.obj", ":2: coordinate 'nan' is not finite"},
+        {"obj_index_out_of_range.obj", ":4: vertex index 4 out of range"},
+        {"obj_index_overflow.obj", ":4: bad vertex index '99999999999999999999'"},
+        {"obj_index_wraps_int.obj", ":4: vertex index 4294967299 out of range"},
+        {"obj_float_index.obj", ":4: bad vertex index '2.5'"},
+        {"off_lying_counts.off", "header line 2 declares 3 vertices and 2147483647 faces"},
+        {"off_negative_count.off", ":2: bad vertex count '-3'"},
+        {"off_lying_corner_count.off", ":6: face declares 2147483647 corners"},
+        {"off_inf_coordinate.off", ":4: coordinate 'inf' is not finite"},
+        {"off_index_out_of_range.off", ":6: vertex index -1 out of range"},
+        {"stl_lying_triangle_count.stl", "binary STL declares 4294967295 triangles"},
+        {"stl_truncated_binary.stl", "binary STL declares 2 triangles, which need 184 bytes, but the file has 134"},
+        {"stl_nan_coordinate_binary.stl", "triangle 0 has a coordinate that is not finite"},
+        {"stl_too_short.stl", "not an STL file"},
+        {"stl_ascii_nan_coordinate.stl", ":5: coordinate 'nan' is not finite"},
+        {"stl_ascii_four_vertices.stl", ":7: expected 'endloop', found 'vertex'"},
+        {"stl_ascii_truncated.stl", ":5: expected 'vertex'"},
+        {"stl_ascii_coordinate_1e200.stl", ":5: coordinate '1e200' is beyond the limit"},
+    };
+    for (const auto& [name, what] : cases) {
+        INFO(name);
+        REQUIRE(fs::exists(corpus_dir / name));
+        require_read_error((corpus_dir / name).string(), what);
+    }
+    // Every file there (the fuzzers add theirs): refused with an IoError that
+    // names it, or read; never a crash, a hang or another exception.
+    const auto start = std::chrono::steady_clock::now();
+    int files = 0;
+    for (const auto& entry : fs::directory_iterator(corpus_dir)) {
+        const std::string path = entry.path().string();
+        INFO(path);
+        ++files;
+        try {
+            const MeshArrays m = read_mesh(path);
+            CHECK(entry.path().filename().string().rfind("invalid_mesh_", 0) == 0);
+            for (const Face& f : m.faces)
+                for (int v : f) CHECK((v >= 0 && v < static_cast<int>(m.positions.size())));
+        } catch (const IoError& e) {
+            CHECK(std::string(e.what()).find(path) != std::string::npos);
+        }
+    }
+    CHECK(files >= static_cast<int>(std::size(cases)));
+    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
+}
+
+TEST_CASE("parse_mesh reads from memory like read_mesh and names the source", "[mesh_io]") {
+    const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    CHECK(parse_mesh(obj, MeshFormat::obj, "mem").faces == std::vector<Face>{{0, 1, 2}});
+    CHECK_THROWS_WITH(parse_mesh("v 0 0\n", MeshFormat::obj, "from-fuzzer"), Catch::StartsWith("from-fuzzer:1:"));
+    CHECK_THROWS_AS(parse_mesh("glTF", MeshFormat::glb, "x"), IoError);
+    for (MeshFormat format : {MeshFormat::obj, MeshFormat::ply, MeshFormat::off, MeshFormat::stl}) {
+        // Empty and tiny inputs: a result or an IoError, nothing else.
+        for (const std::string& bytes : {std::string(), std::string("\0", 1), std::string("ply"), std::string("solid")}) {
+            try {
+                parse_mesh(bytes, format, "tiny");
+            } catch (const IoError&) {
+            }
+        }
+    }
+    // The encoder and the parser agree on every format that can be read.
+    const MeshArrays cube = awkward_cube();
+    for (MeshFormat format : {MeshFormat::obj, MeshFormat::ply, MeshFormat::off, MeshFormat::stl})
+        CHECK(parse_mesh(encode_mesh(cube.view(), format), format, "encoded").faces.size() == cube.faces.size());
+}
+
+TEST_CASE("limits: coordinates up to 1e9, counts against the bytes that follow", "[mesh_io]") {
+    TempDir tmp;
+    CHECK(read_mesh(tmp.write("edge.obj", "v 1e9 -1e9 0\nv 0 0 0\nv 0 1 0\nf 1 2 3\n")).positions[0].x() == 1e9);
+    require_read_error(tmp.write("over.obj", "v 1.0000001e9 0 0\n"), ":1: coordinate '1.0000001e9' is beyond the limit");
+    require_read_error(tmp.write("sign.obj", "v +-1 0 0\n"), ":1: bad number '+-1'");
+    // An element with no entries needs no properties; one with entries does.
+    const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\n";
+    CHECK(read_mesh(tmp.write("empty-el.ply", head + "element nothing 0\nend_header\n0 0 0\n1 0 0\n0 1 0\n"))
+              .positions.size() == 3);
+    // A list longer than the rest of an ascii file, caught before the loop.
+    require_read_error(tmp.write("list.ply", head + "element face 1\nproperty list uchar int vertex_indices\n"
+                                                    "end_header\n0 0 0\n1 0 0\n0 1 0\n200 0 1 2\n"),
+                       ":13: face 0 declares a list of 200 items, which need at least 399 bytes");
+    // A count that fits the bytes but lies is a truncation, found by reading.
+    require_read_error(tmp.write("short.off", "OFF\n2 0 0\n0 0 0 # 1 1 1\n"), "truncated: found 1 of 2 vertices");
+    // Not a regular file: refused before reading (a device could be endless).
+#ifdef __linux__
+    if (fs::exists("/dev/zero")) {
+        fs::create_symlink("/dev/zero", tmp.file("zero.obj"));
+        require_read_error(tmp.file("zero.obj"), "is not a regular file");
+    }
+#endif
+}
+
+TEST_CASE("STL reader: ascii and binary, equal corners welded, -0 equal to 0", "[mesh_io]") {
+    TempDir tmp;
+    const Vec3 a(0, 0, 0), b(1, 0, 0), c(0, 1, 0), d(0, 0, 1);
+    SECTION("ascii, two solids, welded in order of first appearance") {
+        const std::string text = "solid one\n" + stl_facet(a, c, b) + stl_facet(a, b, d) + "endsolid one\nsolid two\n" +
+                                 stl_facet(b, c, d) + stl_facet(Vec3(-0.0, 0, 0), d, c) + "endsolid two\n";
+        const MeshArrays m = read_mesh(tmp.write("tet.stl", text));
+        REQUIRE(m.positions.size() == 4);
+        CHECK(m.positions[0] == a);
+        CHECK(m.positions[1] == c);
+        CHECK(m.positions[2] == b);
+        CHECK(m.positions[3] == d);
+        CHECK(m.faces == std::vector<Face>{{0, 1, 2}, {0, 2, 3}, {2, 1, 3}, {0, 3, 1}});
+        CHECK_NOTHROW(TriMesh::from_arrays(m, "tet.stl"));
+        require_read_error(tmp.write("noend.stl", "solid x\n" + stl_facet(a, b, c)), "no 'endsolid'");
+        require_read_error(tmp.write("junk.stl", "solid x\n" + stl_facet(a, b, c) + "endsolid x\njunk\n"),
+                           ":10: expected 'solid' or the end after 'endsolid'");
+        require_read_error(tmp.write("word.stl", "solid x\nfacet normal 0 0 q\n"), ":2: bad number 'q'");
+    }
+    SECTION("binary, even when its header starts with 'solid'") {
+        std::string bytes = "solid but binary";
+        bytes.resize(80, ' ');
+        bytes += le_u32(2);
+        const float tris[2][9] = {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {1, 0, 0, 0, 1, 0, 0, 0, 1}};
+        for (const auto& t : tris) {
+            for (int k = 0; k < 3; ++k) bytes += le_float(0);
+            for (float v : t) bytes += le_float(v);
+            bytes += std::string(2, '\0');
+        }
+        const MeshArrays m = read_mesh(tmp.write("bin.stl", bytes));
+        CHECK(m.positions.size() == 4);
+        CHECK(m.faces == std::vector<Face>{{0, 1, 2}, {1, 2, 3}});
+        // One byte more: read as ASCII (it starts with "solid"), which it is not.
+        // One byte before: no "solid", and the size does not match the count.
+        require_read_error(tmp.write("bin1.stl", bytes + "x"), "no 'endsolid'");
+        require_read_error(tmp.write("bin2.stl", "x" + bytes), "binary STL declares");
+    }
 }
