@@ -1,5 +1,5 @@
 // `morphogen render MESH... -o SHEET.png [--columns C] [--size PX] [--own-scale]`:
-// draws meshes (OBJ/OFF/PLY) side by side on one PNG contact sheet.
+// draws meshes (OBJ/PLY/OFF/STL) side by side on one PNG contact sheet.
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "mesh_io.hpp"
