@@ -100,8 +100,8 @@ bool parse_long(std::string_view tok, long long& value);
 
 // A coordinate within ±kMaxMeshCoordinate; throws naming the line otherwise.
 double coordinate(std::string_view tok, const std::string& path, std::size_t line);
-// The same check for a vertex read from binary data ("<what>: ...").
-void check_position(const Vec3& p, const std::string& path, const std::string& what, std::size_t line = 0);
+// The same check for a position read as a whole ("<kind> <index> has ...").
+void check_position(const Vec3& p, const std::string& path, const char* kind, long long index, std::size_t line = 0);
 
 // Throws unless the mesh may hold `count` vertices (kMaxMeshVertices).
 void check_vertex_count(long long count, const std::string& path);

@@ -366,7 +366,7 @@ MeshArrays read_ply(const std::string& path, std::string_view text) {
                 if (keep) add_polygon(mesh.faces, corners, path, src.line());
             }
             if (is_vertex) {
-                check_position(p, path, "vertex " + std::to_string(i), src.line());
+                check_position(p, path, "vertex", i, src.line());
                 mesh.positions.push_back(p);
             }
         }

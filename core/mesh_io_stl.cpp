@@ -80,7 +80,7 @@ MeshArrays read_binary_stl(const std::string& path, std::string_view bytes, std:
         for (int k = 0; k < 3; ++k) {
             const char* c = record + 12 + 12 * k;
             const Vec3 p(load_float_le(c), load_float_le(c + 4), load_float_le(c + 8));
-            check_position(p, path, "triangle " + std::to_string(t));
+            check_position(p, path, "triangle", t);
             face[k] = welder.vertex(p);
         }
         mesh.faces.push_back(face);
