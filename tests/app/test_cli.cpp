@@ -49,6 +49,10 @@ TEST_CASE("grow: PLY is float32 unless --ply-double, and every readable format r
     CHECK(stl.positions.size() == exact.positions.size());
     CHECK(stl.faces.size() == exact.faces.size());
     CHECK_NOTHROW(morphogen::TriMesh::from_arrays(stl, "t.stl"));
+
+    // gallery takes the same flag for --format ply.
+    REQUIRE(run_morphogen("gallery --count 1 --seed 5 --format ply --ply-double --out " + path("g")).code == 0);
+    CHECK(read_text(path("g/0000.ply")).find("property double x\n") != std::string::npos);
 }
 
 TEST_CASE("grow is reproducible and a saved genome regrows the same mesh", "[cli]") {
