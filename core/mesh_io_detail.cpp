@@ -166,13 +166,15 @@ void check_room(long double needed, std::size_t available, const std::string& pa
     fail_at(path, line, declared + text);
 }
 
-void add_polygon(std::vector<Face>& faces, const std::vector<int>& corners, const std::string& path,
-                 std::size_t line) {
-    const std::size_t added = corners.size() < 3 ? 0 : corners.size() - 2;
-    if (static_cast<long double>(faces.size()) + added > static_cast<long double>(kMaxMeshTriangles)) {
+void check_triangle_count(std::size_t triangles, long long corners, const std::string& path, std::size_t line) {
+    if (static_cast<long double>(triangles) + static_cast<long double>(corners) - 2 > kMaxMeshTriangles)
         fail_at(path, line, "more than " + std::to_string(kMaxMeshTriangles) +
                                 " triangles (the limit for mesh files, after splitting polygons)");
-    }
+}
+
+void add_polygon(std::vector<Face>& faces, const std::vector<int>& corners, const std::string& path,
+                 std::size_t line) {
+    check_triangle_count(faces.size(), static_cast<long long>(corners.size()), path, line);
     for (std::size_t i = 1; i + 1 < corners.size(); ++i)
         faces.push_back({corners[0], corners[i], corners[i + 1]});
 }

@@ -111,6 +111,10 @@ void check_vertex_count(long long count, const std::string& path);
 void check_room(long double needed, std::size_t available, const std::string& path, const std::string& declared,
                 const char* hint = "a truncated file or a header that lies", std::size_t line = 0);
 
+// Throws when a polygon of `corners` corners would take the triangles past
+// kMaxMeshTriangles (readers call it while collecting a huge polygon's corners).
+void check_triangle_count(std::size_t triangles, long long corners, const std::string& path, std::size_t line);
+
 // Appends polygon `corners` as a triangle fan (0,i,i+1); throws past
 // kMaxMeshTriangles. `line` 0: no line to name.
 void add_polygon(std::vector<Face>& faces, const std::vector<int>& corners, const std::string& path,

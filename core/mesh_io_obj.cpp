@@ -72,6 +72,7 @@ MeshArrays read_obj(const std::string& path, std::string_view text) {
                     fail_line(path, ln, "vertex index " + std::to_string(i) + " out of range (" +
                                             std::to_string(nv) + " vertices defined so far)");
                 corners.push_back(static_cast<int>(v));
+                if (corners.size() % 4096 == 0) check_triangle_count(mesh.faces.size(), corners.size(), path, ln);
             }
             if (corners.size() < 3)
                 fail_line(path, ln, "face with " + std::to_string(corners.size()) + " corners (needs at least 3)");

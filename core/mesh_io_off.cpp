@@ -78,6 +78,7 @@ MeshArrays read_off(const std::string& path, std::string_view text) {
         // Each corner takes two bytes at least: a count beyond the line is a lie.
         if (n > static_cast<long long>(line.size() / 2) + 1)
             fail_line(path, ln, "face declares " + std::to_string(n) + " corners, more than its line can hold");
+        check_triangle_count(mesh.faces.size(), n, path, ln);
         corners.clear();
         for (long long k = 0; k < n; ++k) {  // tokens after the n indices (colours) are ignored
             const std::string_view tok = take_token(line);

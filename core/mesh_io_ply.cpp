@@ -352,6 +352,7 @@ MeshArrays read_ply(const std::string& path, std::string_view text) {
                     if (n < 3)
                         fail_at(path, src.line(), "face " + std::to_string(i) + " has " + std::to_string(items) +
                                        " corners (needs at least 3)");
+                    check_triangle_count(mesh.faces.size(), items, path, src.line());
                     corners.clear();
                 }
                 for (long long j = 0; j < items; ++j) {

@@ -4,6 +4,7 @@
 #include "errors.hpp"
 #include "mesh.hpp"
 #include "mesh_io.hpp"
+#include "mesh_io_detail.hpp"
 
 #include <catch2/catch.hpp>
 #include <tiny_gltf.h>
@@ -644,4 +645,20 @@ TEST_CASE("STL reader: ascii and binary, equal corners welded, -0 equal to 0", "
         require_read_error(tmp.write("bin1.stl", bytes + "x"), "no 'endsolid'");
         require_read_error(tmp.write("bin2.stl", "x" + bytes), "binary STL declares");
     }
+}
+
+TEST_CASE("vertex and triangle limits are enforced at their edge", "[mesh_io]") {
+    // Files that reach them are too big for a test; the shared checks are tested directly.
+    using namespace morphogen::mesh_io_detail;
+    CHECK_NOTHROW(check_vertex_count(kMaxMeshVertices, "v.obj"));
+    CHECK_THROWS_WITH(check_vertex_count(kMaxMeshVertices + 1, "v.obj"),
+                      Catch::StartsWith("v.obj: more than 67108864 vertices"));
+    CHECK_NOTHROW(check_triangle_count(kMaxMeshTriangles - 1, 3, "t.obj", 7));
+    CHECK_THROWS_WITH(check_triangle_count(kMaxMeshTriangles, 3, "t.obj", 7),
+                      Catch::StartsWith("t.obj:7: more than 134217728 triangles"));
+    CHECK_THROWS_WITH(check_triangle_count(0, kMaxMeshTriangles + 3, "t.ply", 0),
+                      Catch::StartsWith("t.ply: more than"));
+    CHECK_NOTHROW(check_room(10, 10, "r.off", "x"));
+    CHECK_THROWS_WITH(check_room(11, 10, "r.off", "x"), "r.off: x, which need at least 11 bytes, but only 10 follow "
+                                                         "(a truncated file or a header that lies)");
 }
