@@ -344,9 +344,12 @@ MeshArrays read_ply(const std::string& path, std::string_view text) {
                 const double n = src.value(prop.count_type, what.c_str(), i);  // an integer type: exact
                 if (n < 0) fail_at(path, src.line(), what + " " + std::to_string(i) + ": negative list length");
                 const auto items = static_cast<long long>(n);
-                check_room(src.least_bytes(prop.type, n), src.remaining(), path,
-                           what + " " + std::to_string(i) + " declares a list of " + std::to_string(items) + " items",
-                           "a truncated file or a count that lies", src.line());
+                const long double least = src.least_bytes(prop.type, n);
+                if (least > src.remaining())  // the message is only built when it is needed
+                    check_room(least, src.remaining(), path,
+                               what + " " + std::to_string(i) + " declares a list of " + std::to_string(items) +
+                                   " items",
+                               "a truncated file or a count that lies", src.line());
                 const bool keep = is_face && k == indices;
                 if (keep) {
                     if (n < 3)
@@ -356,7 +359,7 @@ MeshArrays read_ply(const std::string& path, std::string_view text) {
                     corners.clear();
                 }
                 for (long long j = 0; j < items; ++j) {
-                    const double v = src.value(prop.type, what.c_str(), i);  // an integer type: exact
+                    const double v = src.value(prop.type, what.c_str(), i);  // indices: an integer type, exact
                     if (!keep) continue;
                     if (!(v >= 0 && v < static_cast<double>(vertex->count)))
                         fail_at(path, src.line(), "face " + std::to_string(i) + ": vertex index " +
