@@ -29,6 +29,7 @@ struct GalleryOptions {
     std::string png;
     int threads = 0;
     int columns = 10;
+    MeshWriteOptions mesh_options;
 };
 
 struct GalleryEntry {
@@ -73,7 +74,7 @@ int run_gallery(const GalleryOptions& options) {
                 entry.fitness = config.fitness->evaluate(state.mesh.view());
                 entry.mesh = {state.mesh.positions(), state.mesh.faces()};
                 if (options.format != "none")
-                    write_mesh(entry.mesh.view(), (dir / entry_name(i, options.format)).string());
+                    write_mesh(entry.mesh.view(), (dir / entry_name(i, options.format)).string(), options.mesh_options);
             } catch (const std::exception& e) {
                 entry.error = e.what();
             }
@@ -138,6 +139,8 @@ void add_gallery_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--out", options->out, "Output directory")->required();
     cmd->add_option("--format", options->format, "Mesh format of the entries (none: only summary.csv)")
         ->check(CLI::IsMember({"obj", "glb", "ply", "none"}));
+    cmd->add_flag("--ply-double", options->mesh_options.ply_double,
+                  "With --format ply: 64-bit coordinates and normals instead of float32");
     cmd->add_option("--png", options->png, "Also render a contact sheet of all entries to this PNG");
     cmd->add_option("--columns", options->columns, "Columns of the contact sheet")->check(CLI::Range(1, 100));
     cmd->add_option("--threads", options->threads, "Threads (0 = all cores)")->check(CLI::Range(0, 4096));

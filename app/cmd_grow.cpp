@@ -23,6 +23,7 @@ struct GrowOptions {
     std::optional<int> steps;
     std::string output;
     std::string save_genome;
+    MeshWriteOptions mesh_options;
 };
 
 int run_grow(const GrowOptions& options) {
@@ -40,7 +41,7 @@ int run_grow(const GrowOptions& options) {
     const GrowthState state = Grower(network, config.growth).grow(seed, workspace);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    write_mesh(state.mesh.view(), options.output);
+    write_mesh(state.mesh.view(), options.output, options.mesh_options);
     if (!options.save_genome.empty()) save_genome(genome, options.save_genome);
     const MeshStats stats = mesh_stats(state.mesh.view());
     std::printf("%s: %d vertices, %d faces, height %.3f, width %.3f, %d steps in %.3f s\n", options.output.c_str(),
@@ -62,6 +63,8 @@ void add_grow_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--steps", options->steps, "Override growth.steps")->check(CLI::Range(0, 1'000'000));
     cmd->add_option("-o,--output", options->output, "Output mesh (.obj .ply .off .stl .glb)")->required();
     cmd->add_option("--save-genome", options->save_genome, "Also write the genome as JSON");
+    cmd->add_flag("--ply-double", options->mesh_options.ply_double,
+                  "PLY output: 64-bit coordinates and normals (exact) instead of float32 (what WebGL viewers draw)");
     cmd->callback([options, random, genome, &selected] {
         if (random->count() + genome->count() != 1)
             throw CLI::RequiredError("grow needs one of --random SEED or --genome FILE");

@@ -2,6 +2,7 @@
 // from a file or grown from a genome.
 #include "commands.hpp"
 #include "config_reader.hpp"
+#include "errors.hpp"
 #include "experiment_config.hpp"
 #include "fitness.hpp"
 #include "genome_source.hpp"
@@ -12,6 +13,7 @@
 
 #include <cstdio>
 #include <memory>
+#include <stdexcept>
 #include <string>
 
 namespace morphogen {
@@ -50,12 +52,26 @@ std::string number_text(const nlohmann::json& value) {
     return text;
 }
 
+// A mesh file that reads but holds nothing to score is an invalid mesh
+// (exit 4), named like every other mesh error.
+void require_scorable(const MeshArrays& mesh, const std::string& source) {
+    if (mesh.positions.empty()) throw MeshError(source + ": the mesh has no vertices (nothing to score)");
+    if (mesh.faces.empty()) throw MeshError(source + ": the mesh has no triangles (nothing to score)");
+}
+
 int run_score(const ScoreOptions& options) {
     const ExperimentConfig config = score_config(options);
+    const std::string source = options.mesh.empty() ? options.genome + " (grown)" : options.mesh;
     const MeshArrays mesh = options.mesh.empty() ? grow_genome(config, options.genome) : read_mesh(options.mesh);
+    require_scorable(mesh, source);
     const FitnessOutcome outcome = config.fitness->evaluate(mesh.view());
     const nlohmann::json& fitness_section = config.resolved["fitness"];
-    const nlohmann::json metrics = mesh_metrics(mesh.view(), canopy_params_of(fitness_section));
+    nlohmann::json metrics;
+    try {
+        metrics = mesh_metrics(mesh.view(), canopy_params_of(fitness_section));
+    } catch (const std::logic_error& e) {  // what the measures refuse (e.g. a canopy grid too large)
+        throw MeshError(source + ": " + e.what());
+    }
     const std::string type = config.fitness->function().type();
 
     if (options.json) {
@@ -83,7 +99,7 @@ int run_score(const ScoreOptions& options) {
 void add_score_command(CLI::App& root, CommandRunner& selected) {
     auto options = std::make_shared<ScoreOptions>();
     CLI::App* cmd = root.add_subcommand("score", "Print the configured fitness and every metric of a mesh");
-    auto* mesh = cmd->add_option("--mesh", options->mesh, "Score this mesh file (.obj .off .ply)")
+    auto* mesh = cmd->add_option("--mesh", options->mesh, "Score this mesh file (.obj .ply .off .stl)")
                      ->check(CLI::ExistingFile);
     auto* genome = cmd->add_option("--genome", options->genome, "Grow this genome (JSON) and score the mesh")
                        ->check(CLI::ExistingFile);

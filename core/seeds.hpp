@@ -24,7 +24,7 @@ TriMesh builtin_seed_mesh(const std::string& name, double radius);
 // and the vertex if a sum vanishes.
 std::vector<Vec3> area_weighted_normals(const TriMesh& mesh, const std::string& source);
 
-// A built-in seed by name, or a mesh file (OBJ/OFF/PLY) by path, checked to be
+// A built-in seed by name, or a mesh file (OBJ/PLY/OFF/STL) by path, checked to be
 // a closed, outward-oriented genus-0 triangle manifold (MeshError/IoError
 // naming the file and the defect otherwise).
 Seed make_seed(const std::string& seed_mesh, double radius);

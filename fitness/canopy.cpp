@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -132,15 +133,20 @@ Grid rasterise(MeshView mesh, const CanopyParams& params) {
         }
     }
     const double reach = std::max({std::abs(xmin), std::abs(xmax), std::abs(ymin), std::abs(ymax)}) / params.cell;
-    if (!(reach < kMaxIndex))
-        throw std::length_error("canopy grid index out of range: coordinates / cell reach " + std::to_string(reach));
+    if (!(reach < kMaxIndex)) {
+        char text[160];
+        std::snprintf(text, sizeof text, "canopy grid index out of range: coordinates / cell reach %g (limit %g); "
+                      "increase fitness.cell", reach, kMaxIndex);
+        throw std::length_error(text);
+    }
     grid.i0 = first_centre_from(xmin, params.cell);
     grid.j0 = first_centre_from(ymin, params.cell);
     grid.width = std::max<std::int64_t>(0, last_centre_to(xmax, params.cell) - grid.i0 + 1);
     grid.rows = std::max<std::int64_t>(0, last_centre_to(ymax, params.cell) - grid.j0 + 1);
     if (grid.width > kMaxCells || grid.rows > kMaxCells || grid.width * grid.rows > kMaxCells)
         throw std::length_error("canopy grid of " + std::to_string(grid.width) + " x " + std::to_string(grid.rows) +
-                                " cells is too large; increase the cell size");
+                                " cells is larger than the limit of " + std::to_string(kMaxCells) +
+                                " cells; increase fitness.cell");
     grid.marked.assign(static_cast<std::size_t>(grid.width * grid.rows), 0);
     for (const Candidate& t : above) mark_triangle(t, params.height, params.cell, grid);
     return grid;

@@ -1,5 +1,7 @@
 // End-to-end tests of grow, gallery and bench through the real executable.
 #include "evolve_test_support.hpp"
+#include "mesh.hpp"
+#include "mesh_io.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
@@ -20,6 +22,37 @@ TEST_CASE("grow writes every format and prints a summary", "[cli]") {
         CHECK(r.output.find("vertices") != std::string::npos);
         CHECK(fs::file_size(out) > 0);
     }
+}
+
+TEST_CASE("grow: PLY is float32 unless --ply-double, and every readable format reads back", "[cli]") {
+    TempDir dir("cli-formats");
+    const auto path = [&](const std::string& name) { return (dir.path / name).string(); };
+    for (const std::string name : {"t.obj", "t.ply", "t.off", "t.stl"})
+        REQUIRE(run_morphogen("grow --random 5 " + small + " -o " + path(name)).code == 0);
+    REQUIRE(run_morphogen("grow --random 5 " + small + " --ply-double -o " + path("d.ply")).code == 0);
+    CHECK(read_text(path("t.ply")).find("property float x\n") != std::string::npos);
+    CHECK(read_text(path("d.ply")).find("property double x\n") != std::string::npos);
+    CHECK(read_text(path("d.ply")).find("property double nz\n") != std::string::npos);
+    CHECK(read_text(path("t.obj")).find("\nvn ") != std::string::npos);
+
+    const morphogen::MeshArrays exact = morphogen::read_mesh(path("t.obj"));
+    CHECK(morphogen::read_mesh(path("t.off")).positions == exact.positions);
+    const morphogen::MeshArrays doubles = morphogen::read_mesh(path("d.ply"));
+    CHECK(doubles.positions == exact.positions);
+    CHECK(doubles.faces == exact.faces);
+    const morphogen::MeshArrays floats = morphogen::read_mesh(path("t.ply"));
+    REQUIRE(floats.positions.size() == exact.positions.size());
+    for (std::size_t i = 0; i < exact.positions.size(); ++i)
+        CHECK(floats.positions[i] == exact.positions[i].cast<float>().cast<double>());
+    // STL: shared vertices welded back; the grown mesh is closed again.
+    const morphogen::MeshArrays stl = morphogen::read_mesh(path("t.stl"));
+    CHECK(stl.positions.size() == exact.positions.size());
+    CHECK(stl.faces.size() == exact.faces.size());
+    CHECK_NOTHROW(morphogen::TriMesh::from_arrays(stl, "t.stl"));
+
+    // gallery takes the same flag for --format ply.
+    REQUIRE(run_morphogen("gallery --count 1 --seed 5 --format ply --ply-double --out " + path("g")).code == 0);
+    CHECK(read_text(path("g/0000.ply")).find("property double x\n") != std::string::npos);
 }
 
 TEST_CASE("grow is reproducible and a saved genome regrows the same mesh", "[cli]") {

@@ -8,6 +8,8 @@
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -131,4 +133,63 @@ TEST_CASE("score --genome grows the genome and scores the mesh", "[fitness][cli]
     CHECK(report["fitness"] == report["height"]);
     CHECK(report["vertices"].get<int>() >= 12);
     std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("score refuses hostile and invalid mesh files: one line naming the file, exit 3 or 4", "[fitness][cli]") {
+    const std::filesystem::path corpus = std::filesystem::path(MORPHOGEN_SOURCE_DIR) / "tests" / "corpus" / "mesh";
+    // Files that do not read are I/O errors (3); files that read but hold
+    // nothing to score, or more than the canopy grid can hold, are invalid
+    // meshes (4).
+    const std::pair<const char*, int> cases[] = {
+        {"lying_ply_header.ply", 3},          {"lying_ply_list_length.ply", 3},
+        {"ply_second_face_element_nan_index.ply", 3}, {"obj_coordinates_1e200.obj", 3},
+        {"off_lying_counts.off", 3},          {"stl_lying_triangle_count.stl", 3},
+        {"stl_ascii_nan_coordinate.stl", 3},  {"invalid_mesh_empty.obj", 4},
+        {"invalid_mesh_no_triangles.obj", 4}, {"invalid_mesh_canopy_grid_too_large.obj", 4},
+    };
+    for (const auto& [name, code] : cases) {
+        const std::string path = (corpus / name).string();
+        const auto start = std::chrono::steady_clock::now();
+        const Result r = morphogen_run("score --mesh " + path);
+        INFO(name << ": " << r.out);
+        CHECK(r.code == code);
+        CHECK(r.out.find(path) != std::string::npos);
+        CHECK(std::count(r.out.begin(), r.out.end(), '\n') == 1);
+        CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(10));
+    }
+    const Result empty = morphogen_run("score --mesh " + (corpus / "invalid_mesh_empty.obj").string());
+    CHECK(empty.out.find("mesh error") != std::string::npos);
+    CHECK(empty.out.find("no vertices") != std::string::npos);
+    const Result grid = morphogen_run("score --mesh " + (corpus / "invalid_mesh_canopy_grid_too_large.obj").string());
+    CHECK(grid.out.find("larger than the limit of 268435456 cells") != std::string::npos);
+
+    // validate and evolve read a seed mesh through the same readers: refused at once.
+    const testing::TempDir tmp("score-seed");
+    const std::string config = (tmp.path / "config.json").string();
+    std::ofstream(config) << R"({"growth": {"seed_mesh": ")" << (corpus / "lying_ply_header.ply").string() << R"("}})";
+    for (const std::string& command : {"validate " + config, "evolve " + config + " --out " + (tmp.path / "run").string()}) {
+        const auto start = std::chrono::steady_clock::now();
+        const Result r = morphogen_run(command);
+        INFO(command << ": " << r.out);
+        CHECK(r.code != 0);
+        CHECK(r.out.find("lying_ply_header.ply:3: element 'e0' declares 2147483647 entries") != std::string::npos);
+        CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(10));
+    }
+}
+
+TEST_CASE("score reads STL, PLY and OFF files like the OBJ of the same mesh", "[fitness][cli]") {
+    const testing::TempDir tmp("score-formats");
+    const MeshArrays box = test::make_box({0, 0, 0}, {1, 1, 11});
+    json first;
+    for (const char* name : {"box.obj", "box.ply", "box.off", "box.stl"}) {
+        const std::string path = (tmp.path / name).string();
+        write_mesh(box.view(), path);
+        const Result r = morphogen_run("score --json --mesh " + path);
+        INFO(name << ": " << r.out);
+        REQUIRE(r.code == 0);
+        json report = json::parse(r.out);
+        report.erase("source");
+        if (first.is_null()) first = report;
+        CHECK(report == first);  // the box's coordinates are floats: every format is exact
+    }
 }
