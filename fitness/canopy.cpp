@@ -172,6 +172,8 @@ void top_triangle(const Candidate& t, double cell, const Grid& grid, std::vector
         const double py = cell_centre(j, cell);
         double* row = tops.data() + (j - grid.j0) * grid.width;
         for (std::int64_t i = ia; i <= ib; ++i) {
+            double& top = row[i - grid.i0];
+            if (top >= zmax) continue;  // this triangle cannot raise it
             const double px = cell_centre(i, cell);
             const Orientation wa = orient2d(t.x[1], t.y[1], t.x[2], t.y[2], px, py);
             if (wa.sign < 0) continue;
@@ -180,7 +182,6 @@ void top_triangle(const Candidate& t, double cell, const Grid& grid, std::vector
             const Orientation wc = orient2d(t.x[0], t.y[0], t.x[1], t.y[1], px, py);
             if (wc.sign < 0) continue;
             const double z = (wa.det * t.z[0] + wb.det * t.z[1] + wc.det * t.z[2]) / (wa.det + wb.det + wc.det);
-            double& top = row[i - grid.i0];
             top = std::max(top, std::clamp(z, zmin, zmax));
         }
     }
@@ -206,7 +207,11 @@ std::vector<CellIndex> canopy_cells(MeshView mesh, const CanopyParams& params) {
 
 std::vector<CanopyTop> canopy_tops(MeshView mesh, const CanopyParams& params) {
     check_params(mesh, params);
-    const std::vector<Candidate> above = candidates(mesh, params.height);
+    std::vector<Candidate> above = candidates(mesh, params.height);
+    // Highest triangles first, so most lower ones are skipped cell by cell
+    // (a maximum does not depend on the order).
+    const auto zmax = [](const Candidate& t) { return std::max({t.z[0], t.z[1], t.z[2]}); };
+    std::sort(above.begin(), above.end(), [&](const Candidate& a, const Candidate& b) { return zmax(a) > zmax(b); });
     const Grid grid = grid_for(above, params.cell);
     std::vector<double> tops(static_cast<std::size_t>(grid.width * grid.rows),
                              -std::numeric_limits<double>::infinity());
