@@ -1,7 +1,9 @@
 #pragma once
 // The GA's operators as free functions (ALGORITHM.md §7), each drawing only
 // from the RandomStream it is given, so a birth is a pure function of
-// (population snapshot, parameters, seed, birth index).
+// (population snapshot, parameters, seed, birth index). Variation and the
+// birth itself (conceive_birth) are shared with MAP-Elites (§8), which only
+// picks parents differently.
 #include "ga_params.hpp"
 #include "individual.hpp"
 #include "rng.hpp"

@@ -6,6 +6,7 @@
 #include "evolution/toy_problems.hpp"
 #include "ga_state_json.hpp"
 #include "map_elites.hpp"
+#include "operators.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -231,4 +232,30 @@ TEST_CASE("evaluate_safely: non-finite descriptors invalidate, problems without 
     CHECK(p.valid);
     CHECK(p.score == 0.0);
     CHECK(p.descriptors.empty());
+}
+
+TEST_CASE("conceive_birth: random genomes without a picker, parents from the picker otherwise",
+          "[evolution][operators]") {
+    const std::vector<Block> blocks{{0, 2}, {2, 2}};
+    const BirthRules rules{10, 1.5, 1.0, 0.0, 0.0};  // always crossover, never mutate
+    RandomStream reference(7, 25);
+    const Individual random = conceive_birth(rules, blocks, 4, 7, 25, {});
+    CHECK(random.params == random_parameters(4, 1.5, reference));
+    CHECK_FALSE(random.parent1);
+    Individual a, b;
+    a.id = 3, a.params = {1, 1, 1, 1};
+    b.id = 5, b.params = {2, 2, 2, 2};
+    int calls = 0;
+    const ParentPicker pick = [&](RandomStream&) -> const Individual& { return ++calls == 1 ? a : b; };
+    const Individual child = conceive_birth(rules, blocks, 4, 7, 25, pick);
+    CHECK(calls == 2);
+    CHECK(child.parent1 == 3u);
+    CHECK(child.parent2 == 5u);
+    for (double p : child.params) CHECK((p == 1.0 || p == 2.0));
+    CHECK(child.params[0] == child.params[1]);  // blocks stay together
+    CHECK(child.params[2] == child.params[3]);
+    // below the population a picker is not consulted
+    calls = 0;
+    CHECK(conceive_birth(rules, blocks, 4, 7, 9, pick).params.size() == 4);
+    CHECK(calls == 0);
 }
