@@ -24,6 +24,9 @@ struct Evaluation {
     bool valid = false;
     std::string error;  // why it is invalid
     double size = 0.0;  // a problem-defined size reported in the history (vertices for meshes)
+    // Problem-defined behaviour descriptors that place a genome in a
+    // MAP-Elites archive; empty for problems that have none (the GA ignores them).
+    std::vector<double> descriptors = {};
 };
 
 struct Individual {
@@ -33,6 +36,7 @@ struct Individual {
     std::vector<double> params;
     double fitness = invalid_fitness;      // -infinity exactly when invalid, otherwise finite
     double size = 0.0;
+    std::vector<double> descriptors = {};  // from its Evaluation; empty when invalid or none
 
     bool valid() const { return std::isfinite(fitness); }
 };

@@ -1,5 +1,6 @@
 #include "operators.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -57,32 +58,48 @@ bool insert_child(std::vector<Individual>& population, Individual child, std::si
     return true;
 }
 
-Individual conceive(std::span<const Individual> snapshot, const GaParams& params, std::span<const Block> blocks,
-                    std::size_t dimension, std::uint64_t seed, std::uint64_t birth) {
+BirthRules birth_rules(const GaParams& params) {
+    return {static_cast<std::uint64_t>(params.population), params.init_range, params.crossover, params.mutation_rate,
+            params.mutation_sigma};
+}
+
+Individual conceive_birth(const BirthRules& rules, std::span<const Block> blocks, std::size_t dimension,
+                          std::uint64_t seed, std::uint64_t birth, const ParentPicker& pick) {
     RandomStream stream(seed, birth);
     Individual child;
     child.id = birth;
-    if (birth < static_cast<std::uint64_t>(params.population)) {
-        child.params = random_parameters(dimension, params.init_range, stream);
+    if (birth < rules.population || !pick) {
+        child.params = random_parameters(dimension, rules.init_range, stream);
         return child;
     }
-    const Individual& first = snapshot[tournament(snapshot, params.tournament, stream)];
-    const Individual& second = snapshot[tournament(snapshot, params.tournament, stream)];
+    const Individual& first = pick(stream);
+    const Individual& second = pick(stream);
     child.parent1 = first.id;
-    if (stream.bernoulli(params.crossover)) {
+    if (stream.bernoulli(rules.crossover)) {
         child.parent2 = second.id;
         child.params = crossover(first.params, second.params, blocks, stream);
     } else {
         child.params = first.params;
     }
-    mutate(child.params, params.mutation_rate, params.mutation_sigma, stream);
+    mutate(child.params, rules.mutation_rate, rules.mutation_sigma, stream);
     return child;
 }
 
-std::size_t batch_size(std::uint64_t births, const GaParams& params) {
-    const auto population = static_cast<std::uint64_t>(params.population);
+Individual conceive(std::span<const Individual> snapshot, const GaParams& params, std::span<const Block> blocks,
+                    std::size_t dimension, std::uint64_t seed, std::uint64_t birth) {
+    const ParentPicker pick = [&](RandomStream& stream) -> const Individual& {
+        return snapshot[tournament(snapshot, params.tournament, stream)];
+    };
+    return conceive_birth(birth_rules(params), blocks, dimension, seed, birth, pick);
+}
+
+std::size_t batch_size(std::uint64_t births, std::uint64_t population, int batch) {
     const std::uint64_t to_generation_end = population - births % population;
-    return static_cast<std::size_t>(std::min<std::uint64_t>(to_generation_end, static_cast<std::uint64_t>(params.batch)));
+    return static_cast<std::size_t>(std::min<std::uint64_t>(to_generation_end, static_cast<std::uint64_t>(batch)));
+}
+
+std::size_t batch_size(std::uint64_t births, const GaParams& params) {
+    return batch_size(births, static_cast<std::uint64_t>(params.population), params.batch);
 }
 
 std::vector<Block> check_blocks(std::vector<Block> blocks, std::size_t dimension) {

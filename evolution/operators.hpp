@@ -1,12 +1,15 @@
 #pragma once
 // The GA's operators as free functions (ALGORITHM.md §7), each drawing only
 // from the RandomStream it is given, so a birth is a pure function of
-// (population snapshot, parameters, seed, birth index).
+// (population snapshot, parameters, seed, birth index). Variation and the
+// birth itself (conceive_birth) are shared with MAP-Elites (§8), which only
+// picks parents differently.
 #include "ga_params.hpp"
 #include "individual.hpp"
 #include "rng.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -45,14 +48,34 @@ std::size_t worst_slot(std::span<const Individual> population);
 // worst's. Returns whether the child entered the population.
 bool insert_child(std::vector<Individual>& population, Individual child, std::size_t capacity);
 
-// The birth `birth` (not yet evaluated): a random genome for birth < population,
-// otherwise selection, crossover and mutation from `snapshot`, all drawn from
-// RandomStream(seed, birth).
+// What a birth needs besides its parents; shared by the GA and MAP-Elites.
+struct BirthRules {
+    std::uint64_t population = 0;  // births below this are random genomes (generation 0)
+    double init_range = 0.0;       // random parameters uniform in [-init_range, +init_range)
+    double crossover = 0.0;        // probability a child mixes the blocks of two parents
+    double mutation_rate = 0.0;    // per-parameter probability of a normal step
+    double mutation_sigma = 0.0;   // standard deviation of that step
+};
+BirthRules birth_rules(const GaParams& params);
+
+// Draws one parent from a frozen snapshot with the birth's own stream.
+using ParentPicker = std::function<const Individual&(RandomStream& stream)>;
+
+// The birth `birth` (not yet evaluated), drawing only from RandomStream(seed,
+// birth): a random genome if birth < rules.population or `pick` is empty;
+// otherwise, in this order, parent 1 = pick, parent 2 = pick (drawn always,
+// used only on crossover), the crossover coin, the block coins (crossover
+// only), then mutation of every parameter.
+Individual conceive_birth(const BirthRules& rules, std::span<const Block> blocks, std::size_t dimension,
+                          std::uint64_t seed, std::uint64_t birth, const ParentPicker& pick);
+
+// The GA's birth: conceive_birth with parents chosen by tournament on `snapshot`.
 Individual conceive(std::span<const Individual> snapshot, const GaParams& params, std::span<const Block> blocks,
                     std::size_t dimension, std::uint64_t seed, std::uint64_t birth);
 
-// Births in the batch that starts at `births` done: at most params.batch and
-// never past the end of the current generation (a multiple of population).
+// Births in the batch that starts at `births` done: at most `batch` and never
+// past the end of the current generation (a multiple of `population`).
+std::size_t batch_size(std::uint64_t births, std::uint64_t population, int batch);
 std::size_t batch_size(std::uint64_t births, const GaParams& params);
 
 // Blocks for a problem: `blocks` if they tile [0, dimension) in order (throws

@@ -5,11 +5,14 @@
 
 namespace morphogen {
 
-PopulationStats summarize(std::span<const Individual> population) {
+namespace {
+template <class Range, class Get>
+PopulationStats summarize_range(const Range& members, Get get) {
     PopulationStats stats;
     std::vector<double> scores;
     double size_sum = 0.0;
-    for (const Individual& member : population) {
+    for (const auto& entry : members) {
+        const Individual& member = get(entry);
         if (!member.valid()) continue;
         scores.push_back(member.fitness);
         size_sum += member.size;
@@ -27,6 +30,15 @@ PopulationStats summarize(std::span<const Individual> population) {
     const std::size_t mid = scores.size() / 2;
     stats.median = scores.size() % 2 == 1 ? scores[mid] : 0.5 * (scores[mid - 1] + scores[mid]);
     return stats;
+}
+}  // namespace
+
+PopulationStats summarize(std::span<const Individual> population) {
+    return summarize_range(population, [](const Individual& member) -> const Individual& { return member; });
+}
+
+PopulationStats summarize(std::span<const Individual* const> members) {
+    return summarize_range(members, [](const Individual* member) -> const Individual& { return *member; });
 }
 
 }  // namespace morphogen

@@ -15,5 +15,7 @@ struct PopulationStats {
 
 // Sums run in slot order, so the result is a pure function of the population.
 PopulationStats summarize(std::span<const Individual> population);
+// The same over individuals held elsewhere (e.g. an archive's elites), in the given order.
+PopulationStats summarize(std::span<const Individual* const> members);
 
 }  // namespace morphogen

@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -118,11 +119,9 @@ void mark_triangle(const Candidate& t, double height, double cell, Grid& grid) {
     }
 }
 
-Grid rasterise(MeshView mesh, const CanopyParams& params) {
-    check_mesh_view(mesh);
-    if (!(params.cell > 0) || !std::isfinite(params.cell) || !std::isfinite(params.height))
-        throw std::invalid_argument("canopy needs a finite height and a positive cell");
-    const std::vector<Candidate> above = candidates(mesh, params.height);
+// The grid covering every cell centre in the candidates' bounding box
+// (`marked` left empty); throws for a grid too large to hold.
+Grid grid_for(const std::vector<Candidate>& above, double cell) {
     Grid grid;
     if (above.empty()) return grid;
     double xmin = above[0].x[0], xmax = xmin, ymin = above[0].y[0], ymax = ymin;
@@ -132,24 +131,66 @@ Grid rasterise(MeshView mesh, const CanopyParams& params) {
             ymin = std::min(ymin, t.y[k]), ymax = std::max(ymax, t.y[k]);
         }
     }
-    const double reach = std::max({std::abs(xmin), std::abs(xmax), std::abs(ymin), std::abs(ymax)}) / params.cell;
+    const double reach = std::max({std::abs(xmin), std::abs(xmax), std::abs(ymin), std::abs(ymax)}) / cell;
     if (!(reach < kMaxIndex)) {
         char text[160];
         std::snprintf(text, sizeof text, "canopy grid index out of range: coordinates / cell reach %g (limit %g); "
                       "increase fitness.cell", reach, kMaxIndex);
         throw std::length_error(text);
     }
-    grid.i0 = first_centre_from(xmin, params.cell);
-    grid.j0 = first_centre_from(ymin, params.cell);
-    grid.width = std::max<std::int64_t>(0, last_centre_to(xmax, params.cell) - grid.i0 + 1);
-    grid.rows = std::max<std::int64_t>(0, last_centre_to(ymax, params.cell) - grid.j0 + 1);
+    grid.i0 = first_centre_from(xmin, cell);
+    grid.j0 = first_centre_from(ymin, cell);
+    grid.width = std::max<std::int64_t>(0, last_centre_to(xmax, cell) - grid.i0 + 1);
+    grid.rows = std::max<std::int64_t>(0, last_centre_to(ymax, cell) - grid.j0 + 1);
     if (grid.width > kMaxCells || grid.rows > kMaxCells || grid.width * grid.rows > kMaxCells)
         throw std::length_error("canopy grid of " + std::to_string(grid.width) + " x " + std::to_string(grid.rows) +
                                 " cells is larger than the limit of " + std::to_string(kMaxCells) +
                                 " cells; increase fitness.cell");
+    return grid;
+}
+
+void check_params(MeshView mesh, const CanopyParams& params) {
+    check_mesh_view(mesh);
+    if (!(params.cell > 0) || !std::isfinite(params.cell) || !std::isfinite(params.height))
+        throw std::invalid_argument("canopy needs a finite height and a positive cell");
+}
+
+Grid rasterise(MeshView mesh, const CanopyParams& params) {
+    check_params(mesh, params);
+    const std::vector<Candidate> above = candidates(mesh, params.height);
+    Grid grid = grid_for(above, params.cell);
     grid.marked.assign(static_cast<std::size_t>(grid.width * grid.rows), 0);
     for (const Candidate& t : above) mark_triangle(t, params.height, params.cell, grid);
     return grid;
+}
+
+// H at every centre of the grid: the highest interpolated z of the triangles
+// covering it, each clamped to its triangle's z range (interpolation is a
+// convex combination, so the clamp only removes rounding; it makes "H > height"
+// agree exactly with mark_triangle's test). -infinity where no candidate covers.
+void top_triangle(const Candidate& t, double cell, const Grid& grid, std::vector<double>& tops) {
+    const double xmin = std::min({t.x[0], t.x[1], t.x[2]}), xmax = std::max({t.x[0], t.x[1], t.x[2]});
+    const double ymin = std::min({t.y[0], t.y[1], t.y[2]}), ymax = std::max({t.y[0], t.y[1], t.y[2]});
+    const double zmin = std::min({t.z[0], t.z[1], t.z[2]}), zmax = std::max({t.z[0], t.z[1], t.z[2]});
+    const std::int64_t ia = first_centre_from(xmin, cell), ib = last_centre_to(xmax, cell);
+    const std::int64_t ja = first_centre_from(ymin, cell), jb = last_centre_to(ymax, cell);
+    for (std::int64_t j = ja; j <= jb; ++j) {
+        const double py = cell_centre(j, cell);
+        double* row = tops.data() + (j - grid.j0) * grid.width;
+        for (std::int64_t i = ia; i <= ib; ++i) {
+            double& top = row[i - grid.i0];
+            if (top >= zmax) continue;  // this triangle cannot raise it
+            const double px = cell_centre(i, cell);
+            const Orientation wa = orient2d(t.x[1], t.y[1], t.x[2], t.y[2], px, py);
+            if (wa.sign < 0) continue;
+            const Orientation wb = orient2d(t.x[2], t.y[2], t.x[0], t.y[0], px, py);
+            if (wb.sign < 0) continue;
+            const Orientation wc = orient2d(t.x[0], t.y[0], t.x[1], t.y[1], px, py);
+            if (wc.sign < 0) continue;
+            const double z = (wa.det * t.z[0] + wb.det * t.z[1] + wc.det * t.z[2]) / (wa.det + wb.det + wc.det);
+            top = std::max(top, std::clamp(z, zmin, zmax));
+        }
+    }
 }
 
 }  // namespace
@@ -168,6 +209,26 @@ std::vector<CellIndex> canopy_cells(MeshView mesh, const CanopyParams& params) {
             if (grid.marked[r * grid.width + c]) cells.emplace_back(grid.i0 + c, grid.j0 + r);
     std::sort(cells.begin(), cells.end());
     return cells;
+}
+
+std::vector<CanopyTop> canopy_tops(MeshView mesh, const CanopyParams& params) {
+    check_params(mesh, params);
+    std::vector<Candidate> above = candidates(mesh, params.height);
+    // Highest triangles first, so most lower ones are skipped cell by cell
+    // (a maximum does not depend on the order).
+    const auto zmax = [](const Candidate& t) { return std::max({t.z[0], t.z[1], t.z[2]}); };
+    std::sort(above.begin(), above.end(), [&](const Candidate& a, const Candidate& b) { return zmax(a) > zmax(b); });
+    const Grid grid = grid_for(above, params.cell);
+    std::vector<double> tops(static_cast<std::size_t>(grid.width * grid.rows),
+                             -std::numeric_limits<double>::infinity());
+    for (const Candidate& t : above) top_triangle(t, params.cell, grid, tops);
+    std::vector<CanopyTop> out;
+    for (std::int64_t r = 0; r < grid.rows; ++r)
+        for (std::int64_t c = 0; c < grid.width; ++c)
+            if (const double top = tops[r * grid.width + c]; top > params.height)
+                out.push_back({{grid.i0 + c, grid.j0 + r}, top});
+    std::sort(out.begin(), out.end(), [](const CanopyTop& a, const CanopyTop& b) { return a.cell < b.cell; });
+    return out;
 }
 
 }  // namespace morphogen

@@ -34,6 +34,14 @@ double canopy_area(MeshView mesh, const CanopyParams& params);
 // The counted cells of the same rasterisation, sorted.
 std::vector<CellIndex> canopy_cells(MeshView mesh, const CanopyParams& params);
 
+// The counted cells of canopy_cells, each with H at its centre (the highest
+// interpolated z of the triangles covering it; > params.height), sorted by cell.
+struct CanopyTop {
+    CellIndex cell;
+    double top;
+};
+std::vector<CanopyTop> canopy_tops(MeshView mesh, const CanopyParams& params);
+
 // The reference: a vertical ray from above at every cell centre of the mesh's
 // bounding box, first hit on a CGAL AABB tree of the non-vertical triangles.
 // Slow; for tests. Sorted.

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace morphogen {
@@ -33,18 +34,26 @@ double mesh_height(MeshView mesh) {
     return top;
 }
 
-double mesh_footprint(MeshView mesh) {
-    using P = std::pair<double, double>;
+namespace {
+using P = std::pair<double, double>;
+
+double cross(const P& o, const P& a, const P& b) {
+    return (a.first - o.first) * (b.second - o.second) - (a.second - o.second) * (b.first - o.first);
+}
+
+// Sorted, duplicate-free xy-projections.
+std::vector<P> xy_points(std::span<const Vec3> positions) {
     std::vector<P> points;
-    points.reserve(mesh.positions.size());
-    for (const Vec3& p : mesh.positions) points.emplace_back(p.x(), p.y());
+    points.reserve(positions.size());
+    for (const Vec3& p : positions) points.emplace_back(p.x(), p.y());
     std::sort(points.begin(), points.end());
     points.erase(std::unique(points.begin(), points.end()), points.end());
-    if (points.size() < 3) return 0.0;
-    auto cross = [](const P& o, const P& a, const P& b) {
-        return (a.first - o.first) * (b.second - o.second) - (a.second - o.second) * (b.first - o.first);
-    };
-    // Andrew's monotone chain: lower hull then upper hull, counter-clockwise.
+    return points;
+}
+
+// Andrew's monotone chain over sorted distinct points (at least 3): lower
+// hull then upper hull, counter-clockwise, collinear points dropped.
+std::vector<P> hull_of(const std::vector<P>& points) {
     std::vector<P> hull(2 * points.size());
     std::size_t k = 0;
     for (std::size_t i = 0; i < points.size(); ++i) {
@@ -56,6 +65,19 @@ double mesh_footprint(MeshView mesh) {
         hull[k++] = points[i];
     }
     hull.resize(k - 1);  // the last point repeats the first
+    return hull;
+}
+
+double distance2(const P& a, const P& b) {
+    const double dx = a.first - b.first, dy = a.second - b.second;
+    return dx * dx + dy * dy;
+}
+}  // namespace
+
+double mesh_footprint(MeshView mesh) {
+    const std::vector<P> points = xy_points(mesh.positions);
+    if (points.size() < 3) return 0.0;
+    const std::vector<P> hull = hull_of(points);
     double twice = 0.0;
     for (std::size_t i = 0; i < hull.size(); ++i) {
         const P& a = hull[i];
@@ -64,6 +86,31 @@ double mesh_footprint(MeshView mesh) {
     }
     return 0.5 * std::abs(twice);
 }
+
+double xy_width(std::span<const Vec3> positions) {
+    const std::vector<P> points = xy_points(positions);
+    if (points.size() < 2) return 0.0;
+    if (points.size() == 2) return std::sqrt(distance2(points[0], points[1]));
+    const std::vector<P> hull = hull_of(points);
+    const std::size_t m = hull.size();
+    if (m == 2) return std::sqrt(distance2(hull[0], hull[1]));
+    // Rotating calipers: for each edge (i, i+1) advance the antipodal vertex j
+    // while it gets farther from the edge's line; the diameter is among the
+    // antipodal pairs. The area only rises strictly, so j cannot cycle.
+    double best = 0.0;
+    std::size_t j = 1;
+    for (std::size_t i = 0; i < m; ++i) {
+        const std::size_t next = (i + 1) % m;
+        for (std::size_t steps = 0; steps < m && cross(hull[i], hull[next], hull[(j + 1) % m]) >
+                                                     cross(hull[i], hull[next], hull[j]);
+             ++steps)
+            j = (j + 1) % m;
+        best = std::max({best, distance2(hull[i], hull[j]), distance2(hull[next], hull[j])});
+    }
+    return std::sqrt(best);
+}
+
+double mesh_width(MeshView mesh) { return xy_width(mesh.positions); }
 
 double mesh_area(MeshView mesh) {
     double sum = 0.0;

@@ -3,6 +3,8 @@
 // metrics. None needs the mesh to be closed except volume.
 #include "mesh.hpp"
 
+#include <span>
+
 namespace morphogen {
 
 // Throws std::invalid_argument if a face index is out of range or a
@@ -13,6 +15,11 @@ void check_mesh_view(MeshView mesh);
 double mesh_height(MeshView mesh);
 // Area of the convex hull of the vertices' xy-projections (monotone chain).
 double mesh_footprint(MeshView mesh);
+// Largest distance between the xy-projections of two vertices (the diameter
+// of the footprint's convex hull, by rotating calipers); 0 for one point.
+double mesh_width(MeshView mesh);
+// The same over any points.
+double xy_width(std::span<const Vec3> positions);
 // Sum of triangle areas.
 double mesh_area(MeshView mesh);
 // Signed volume by the divergence theorem, sum of det(a,b,c)/6: the enclosed

@@ -1,0 +1,48 @@
+#pragma once
+// The batch step both algorithms share (ALGORITHM.md §7): the children of a
+// run of consecutive births are conceived from a frozen snapshot and evaluated
+// in parallel (OpenMP, dynamic schedule); the caller then inserts them in
+// birth order. Each child depends only on (snapshot, seed, birth index), so
+// the result is the same for every thread count.
+#include "individual.hpp"
+#include "problem.hpp"
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace morphogen {
+
+// Scores one genome and never throws. An exception, a non-finite score or a
+// non-finite descriptor makes the result invalid, with the reason in `error`
+// ("invalid" if the problem gave none); an invalid result has size 0 and no
+// descriptors.
+Evaluation evaluate_safely(const Problem& problem, std::span<const double> params, int worker) noexcept;
+
+struct BredBatch {
+    std::vector<Individual> children;  // in birth order; fitness, size and descriptors filled in
+    std::vector<std::string> errors;   // parallel to children: why it is invalid ("" if valid)
+};
+
+// Births [first, first + count): conceive(birth) makes each child (it must
+// only read state that stays unchanged during the call, and may run on any
+// thread), then the problem scores it with worker = the OpenMP thread number.
+// Calls problem.prepare(threads) first; threads <= 0 means OpenMP's default.
+// Failures outside evaluation (e.g. std::bad_alloc while conceiving) are
+// rethrown after the parallel region.
+BredBatch breed_batch(Problem& problem, std::uint64_t first, std::size_t count, int threads,
+                      const std::function<Individual(std::uint64_t birth)>& conceive);
+
+// Replaces `best` by `child` if the child is valid and strictly fitter (so the
+// earliest of equally fit individuals stays).
+inline void keep_best(std::optional<Individual>& best, const Individual& child) {
+    if (child.valid() && (!best || child.fitness > best->fitness)) best = child;
+}
+
+// The thread count breed_batch uses for `threads`.
+int resolve_thread_count(int threads);
+
+}  // namespace morphogen

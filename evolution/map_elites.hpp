@@ -1,0 +1,81 @@
+#pragma once
+// The MAP-Elites driver (ALGORITHM.md §8), shaped like SteadyStateGA: step()
+// performs one batch. Births [0, P) are random genomes (generation 0); every
+// later birth draws parent 1 and parent 2 uniformly from the occupied cells
+// of the archive as it stood before the batch (cells in index order, the
+// index from the birth's own stream; parent 2 is used only on crossover),
+// then crossover and mutation as in §7 (operators.hpp: conceive_birth). The
+// batch is bred in parallel and its children inserted in birth order. So the
+// state after any number of steps is the same for every thread count.
+//
+// A birth after generation 0 while the archive is still empty (every earlier
+// child was invalid) is a random genome, as in generation 0.
+#include "archive.hpp"
+#include "individual.hpp"
+#include "problem.hpp"
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace morphogen {
+
+struct MapElitesParams {
+    int population = 100;         // generation size; generation 0 is this many random genomes
+    double crossover = 0.3;       // probability a child mixes the blocks of two elites
+    double mutation_rate = 0.05;  // per-parameter probability of a normal step
+    double mutation_sigma = 0.3;  // standard deviation of that step
+    int batch = 32;               // births drawn from one archive snapshot and evaluated in parallel
+    double init_range = 2.0;      // initial parameters uniform in [-init_range, +init_range)
+};
+
+// Everything needed to continue a run exactly (with the parameters and seed).
+// The archive holds its CVT centroids, so a resume never recomputes them.
+struct MapElitesState {
+    std::uint64_t births = 0;                   // births done; the next birth's index
+    Archive archive;                            // the elites
+    std::optional<Individual> best;             // best valid individual ever born (earliest on ties)
+    std::uint64_t invalid_in_generation = 0;    // invalid births so far in the current generation
+    std::uint64_t new_cells_in_generation = 0;  // cells first filled so far in the current generation
+};
+
+struct EliteBatchOutcome {
+    std::vector<Individual> children;          // in birth order, each with fitness and descriptors
+    std::vector<std::string> errors;           // parallel: why it is invalid ("" if valid)
+    std::vector<std::optional<std::uint64_t>> cells;  // parallel: its cell (none if invalid)
+    std::vector<Archive::Placement> placements;       // parallel: what insertion did
+    bool ends_generation = false;              // the batch completed a generation
+    std::uint64_t generation_invalid = 0;      // if so: invalid births in that generation
+    std::uint64_t generation_new_cells = 0;    // if so: cells first filled in that generation
+};
+
+class MapElites {
+public:
+    // Throws std::invalid_argument for parameters out of range or blocks that
+    // do not tile the problem's parameters. `state` is trusted to match.
+    MapElites(const MapElitesParams& params, std::uint64_t seed, Problem& problem, MapElitesState state);
+
+    // One batch with `threads` workers (<= 0: OpenMP's default). A child
+    // whose evaluation throws, or gives a non-finite score or descriptor, or
+    // a descriptor vector of the wrong length, is invalid and enters nowhere.
+    EliteBatchOutcome step(int threads);
+
+    const MapElitesState& state() const { return state_; }
+    const MapElitesParams& params() const { return params_; }
+    std::uint64_t seed() const { return seed_; }
+    std::uint64_t completed_generations() const { return state_.births / population(); }
+    bool at_generation_end() const { return state_.births > 0 && state_.births % population() == 0; }
+    std::uint64_t births_to_finish(std::uint64_t generation) const { return (generation + 1) * population(); }
+
+private:
+    std::uint64_t population() const { return static_cast<std::uint64_t>(params_.population); }
+
+    MapElitesParams params_;
+    std::uint64_t seed_;
+    Problem& problem_;
+    std::vector<Block> blocks_;
+    MapElitesState state_;
+};
+
+}  // namespace morphogen
