@@ -61,6 +61,27 @@ build_targets=()
 for t in "${targets[@]}"; do build_targets+=(--target "fuzz_$t"); done
 cmake --build "$dir" --parallel "$(nproc)" "${build_targets[@]}" || exit 2
 
+# --- triage: one line per distinct finding, "count  kind: first report line"
+# (numbers and quoted text blanked, so one defect hit with many inputs counts
+# once), followed by an example file. Crashes are rerun to read their report.
+triage() {
+  local t=$1 findings=$2 f kind line
+  for f in $(ls -t "$findings" | head -200); do
+    case "$f" in
+      timeout-*) line="hang: ran longer than ${timeout_s}s" ;;
+      oom-*) line="out of memory: above ${rss_mb} MB" ;;
+      slow-unit-*) continue ;;
+      *)
+        line=$(timeout $((timeout_s * 3)) "$dir/fuzz/fuzz_$t" -timeout="$timeout_s" -rss_limit_mb="$rss_mb" \
+                 "$findings/$f" 2>&1 | grep -m1 -E 'fuzz finding:|runtime error:|ERROR: AddressSanitizer|ERROR: libFuzzer|SUMMARY:' \
+                 | sed -E "s/^.*(fuzz finding:|runtime error:|ERROR: AddressSanitizer|ERROR: libFuzzer)/\\1/" || true)
+        [ -n "$line" ] || line="crash: no report (rerun $findings/$f)" ;;
+    esac
+    kind=$(printf '%s' "$line" | sed -E "s/'[^']*'/'...'/g; s/0x[0-9a-f]+/0x.../g; s/[0-9]+/N/g" | cut -c1-220)
+    printf '%s\t%s\n' "$kind" "$findings/$f"
+  done | sort | awk -F'\t' '{n[$1]++; if (!($1 in ex)) ex[$1]=$2} END {for (k in n) printf "%6d  %s\n        e.g. %s\n", n[k], k, ex[k]}'
+}
+
 # --- run
 export ASAN_OPTIONS=${ASAN_OPTIONS:-abort_on_error=1:detect_leaks=1}
 export UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1}
@@ -95,10 +116,12 @@ for t in "${targets[@]}"; do
   after=$(find "$findings" -type f | wc -l)
   new=$((after - before))
   total_findings=$((total_findings + new))
+  triage "$t" "$findings" >"$dir/logs/$t.findings.txt"
   # Fork mode's status lines: "#<execs>: cov: .. corp: .. exec/s: .. oom/timeout/crash: a/b/c time: ..s".
   status=$(grep -E '^#[0-9]+: cov:' "$log" | tail -1 || true)
   [ -n "$status" ] || status=$(tail -1 "$log")
   summary+=("$t: $new new finding(s), libFuzzer exit $rc; $status")
+  [ ! -s "$dir/logs/$t.findings.txt" ] || summary+=("$(sed 's/^/  /' "$dir/logs/$t.findings.txt")")
 done
 
 echo
