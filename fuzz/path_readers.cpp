@@ -15,13 +15,21 @@ namespace {
 namespace fs = std::filesystem;
 
 // A directory of this process's own (several fuzzers or replays may run at
-// once), removed at a normal exit. A crash leaves it in the temp directory.
+// once), removed at a normal exit; a crash leaves it behind. In /dev/shm where
+// there is one: a file per input on disk made the mesh and checkpoint targets
+// 14 times slower (214 against 3000 inputs/s).
+fs::path scratch_base() {
+    std::error_code ec;
+    if (fs::is_directory("/dev/shm", ec) && ::access("/dev/shm", W_OK) == 0) return "/dev/shm";
+    const fs::path temp = fs::temp_directory_path(ec);
+    return ec ? fs::path("/tmp") : temp;
+}
+
 class ScratchDirectory {
 public:
     ScratchDirectory() {
         std::error_code ec;
-        const fs::path base = fs::temp_directory_path(ec);
-        dir_ = (ec ? fs::path("/tmp") : base) / ("morphogen-fuzz-" + std::to_string(::getpid()));
+        dir_ = scratch_base() / ("morphogen-fuzz-" + std::to_string(::getpid()));
         fs::create_directories(dir_, ec);
         if (ec) finding("harness: cannot create scratch directory " + dir_.string() + ": " + ec.message());
     }
