@@ -29,10 +29,15 @@ void check_one_line_naming(const CliResult& r, const std::string& file) {
 
 std::string deep_nesting(std::size_t depth) { return std::string(depth, '[') + std::string(depth, ']'); }
 
+// The hostile files of a corpus folder: every file but the fuzzers' valid
+// seeds (named valid-*) and READMEs.
 std::vector<fs::path> corpus_files(const std::string& kind) {
     std::vector<fs::path> files;
-    for (const auto& entry : fs::directory_iterator(corpus / kind))
-        if (entry.is_regular_file()) files.push_back(entry.path());
+    for (const auto& entry : fs::directory_iterator(corpus / kind)) {
+        const std::string name = entry.path().filename().string();
+        if (entry.is_regular_file() && name.rfind("valid-", 0) != 0 && name.rfind("README", 0) != 0)
+            files.push_back(entry.path());
+    }
     std::sort(files.begin(), files.end());
     return files;
 }
