@@ -47,22 +47,11 @@ private:
     fs::path path_;
 };
 
-std::string extension_of(MeshFormat format) {
-    switch (format) {
-        case MeshFormat::obj: return ".obj";
-        case MeshFormat::ply: return ".ply";
-        case MeshFormat::off: return ".off";
-        case MeshFormat::stl: return ".stl";
-        case MeshFormat::glb: return ".glb";
-    }
-    return ".bin";
-}
 
 }  // namespace
 
 MeshArrays read_mesh_bytes(std::string_view bytes, MeshFormat format) {
-    const ScratchFile file(bytes, extension_of(format));
-    return read_mesh(file.path().string());
+    return parse_mesh(bytes, format, "fuzz input");
 }
 
 RunState load_checkpoint_bytes(std::string_view bytes) {
