@@ -1,6 +1,7 @@
 #include "experiment_config.hpp"
 
 #include "config_reader.hpp"
+#include "network.hpp"
 
 #include <filesystem>
 
@@ -47,8 +48,10 @@ json with_overrides(const json& document, const ConfigOverrides& o) {
 }
 }  // namespace
 
-GaParams read_evolution_params(ObjectReader& reader) {
+GaParams read_evolution_params(ObjectReader& reader, Algorithm* algorithm) {
     GaParams p;
+    const std::string name = reader.choice("algorithm", "steady_state", {"steady_state", "map_elites"});
+    if (algorithm != nullptr) *algorithm = name == "map_elites" ? Algorithm::map_elites : Algorithm::steady_state;
     p.population = static_cast<int>(reader.integer("population", p.population, 2, 1'000'000));
     p.tournament = static_cast<int>(reader.integer("tournament", p.tournament, 1, 1000));
     p.crossover = reader.number("crossover", p.crossover, 0.0, 1.0);
@@ -103,12 +106,16 @@ ExperimentConfig read_experiment_config(const json& original, const std::string&
     config.network = read_section(top, "network", issues, read_network_params);
     config.growth = read_section(top, "growth", issues, read_growth_params);
     config.fitness = read_section(top, "fitness", issues, read_fitness);
-    config.evolution = read_section(top, "evolution", issues, read_evolution_params);
+    config.evolution = read_section(top, "evolution", issues,
+                                    [&](ObjectReader& r) { return read_evolution_params(r, &config.algorithm); });
     config.run = read_section(top, "run", issues, read_run_params);
+    config.qd = read_qd_params(top, config.algorithm, parameter_count(config.network.layers()));
 
     top.finish();
     issues.throw_if_any(source);
     config.resolved = top.resolved();
+    // A steady-state config resolves to the same bytes as before MAP-Elites.
+    if (config.algorithm == Algorithm::steady_state) config.resolved["evolution"].erase("algorithm");
     return config;
 }
 

@@ -8,6 +8,7 @@
 #include "fitness.hpp"
 #include "ga_params.hpp"
 #include "growth_params.hpp"
+#include "map_elites_config.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -34,6 +35,8 @@ struct ExperimentConfig {
     GrowthParams growth;
     std::shared_ptr<const Fitness> fitness;
     GaParams evolution;
+    Algorithm algorithm = Algorithm::steady_state;  // evolution.algorithm
+    QdParams qd;  // descriptors and archive (map_elites only; empty otherwise)
     RunParams run;
     nlohmann::json resolved;  // the config with every default filled in
 };
@@ -53,7 +56,10 @@ ExperimentConfig read_experiment_config(const nlohmann::json& document, const st
 ExperimentConfig load_experiment_config(const std::string& path, const ConfigOverrides& overrides = {});
 
 // The `evolution` and `run` sections on their own (each calls reader.finish()).
-GaParams read_evolution_params(ObjectReader& reader);
+// `algorithm` (if not null) receives evolution.algorithm; the key is recorded
+// in the reader's resolved section either way (read_experiment_config drops
+// it again for steady_state, so GA configs resolve as before it existed).
+GaParams read_evolution_params(ObjectReader& reader, Algorithm* algorithm = nullptr);
 RunParams read_run_params(ObjectReader& reader);
 
 // A run name derived from a config path: its stem, sanitised.

@@ -4,6 +4,9 @@
 #include "mesh_io.hpp"
 #include "network.hpp"
 
+#include <stdexcept>
+#include <string>
+
 namespace morphogen {
 
 GrowthProblem::GrowthProblem(const ExperimentConfig& config)
@@ -11,7 +14,10 @@ GrowthProblem::GrowthProblem(const ExperimentConfig& config)
       dimension_(parameter_count(layers_)),
       growth_(config.growth),
       seed_(make_seed(config.growth.seed_mesh, config.growth.seed_radius)),
-      fitness_(config.fitness) {}
+      fitness_(config.fitness) {
+    if (config.algorithm == Algorithm::map_elites)
+        descriptors_.emplace(config.qd.measure_names(), canopy_params_of(config.resolved.at("fitness")));
+}
 
 std::vector<Block> GrowthProblem::blocks() const { return neuron_blocks(layers_); }
 
@@ -24,7 +30,16 @@ Evaluation GrowthProblem::evaluate(std::span<const double> params, int worker) c
     const Grower grower(network, growth_);
     const GrowthState state = grower.grow(seed_, workspaces_.at(static_cast<std::size_t>(worker)));
     const FitnessOutcome outcome = fitness_->evaluate(state.mesh.view());
-    return {outcome.score, outcome.valid, outcome.error, static_cast<double>(state.mesh.num_vertices())};
+    Evaluation evaluation{outcome.score, outcome.valid, outcome.error, static_cast<double>(state.mesh.num_vertices())};
+    if (descriptors_ && evaluation.valid) {
+        try {
+            evaluation.descriptors = (*descriptors_)(state.mesh.view());
+        } catch (const std::invalid_argument& e) {
+            evaluation.valid = false;
+            evaluation.error = std::string("descriptors: ") + e.what();
+        }
+    }
+    return evaluation;
 }
 
 GrowthState GrowthProblem::grow(std::span<const double> params) const {

@@ -2,6 +2,7 @@
 // The experiment as a GA Problem: a genome (parameter vector) becomes a
 // Network, grows the config's seed mesh with core's Grower, and is scored by
 // the config's Fitness. This is the one place where evolution meets meshes.
+#include "descriptors.hpp"
 #include "experiment_config.hpp"
 #include "growth.hpp"
 #include "problem.hpp"
@@ -9,6 +10,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace morphogen {
@@ -22,7 +24,9 @@ public:
     // One block per neuron (weights and threshold), as crossover exchanges them.
     std::vector<Block> blocks() const override;
     void prepare(int workers) override;
-    // Score = fitness of the grown mesh; size = its vertex count.
+    // Score = fitness of the grown mesh; size = its vertex count; for a
+    // MAP-Elites run, descriptors = the config's measures of that same mesh
+    // (a valid score with a measure that throws is invalid, with the reason).
     Evaluation evaluate(std::span<const double> params, int worker) const override;
 
     // Grows one genome (single-threaded use, e.g. exporting the best).
@@ -36,6 +40,7 @@ private:
     GrowthParams growth_;
     Seed seed_;
     std::shared_ptr<const Fitness> fitness_;
+    std::optional<DescriptorSet> descriptors_;  // MAP-Elites runs only
     // One per worker; evaluate() with worker w touches only workspaces_[w].
     mutable std::vector<GrowthWorkspace> workspaces_;
 };

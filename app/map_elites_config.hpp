@@ -1,0 +1,43 @@
+#pragma once
+// The config keys of MAP-Elites runs (ALGORITHM.md §8, docs/map-elites.md):
+// `evolution.algorithm`, the top-level `descriptors` list and `archive`
+// section. They appear in the resolved config only when the algorithm is
+// "map_elites", so a steady-state config resolves to the same bytes as before
+// they existed (its config.json and checkpoints are unchanged).
+#include "archive.hpp"
+#include "config_reader.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace morphogen {
+
+enum class Algorithm { steady_state, map_elites };
+
+struct QdParams {
+    std::vector<DescriptorRange> descriptors;  // name = the measure (fitness/descriptors.hpp)
+    ArchiveKind archive = ArchiveKind::grid;
+    std::uint64_t cvt_cells = 1000;            // archive.cells, CVT only
+    double qd_offset = 0.0;                    // archive.qd_offset: QD-score sums fitness - offset
+
+    std::vector<std::string> measure_names() const;
+    // Cells of the archive: the product of the bins (grid) or cvt_cells.
+    std::uint64_t cells() const;
+};
+
+// Reads `descriptors` and `archive` from the top-level reader for a run with
+// `algorithm`, adding every problem to the reader's issues with its key path:
+// an unknown measure (with the nearest name), min >= max, bins < 1, a grid
+// with no or more than 3 descriptors or more than kMaxGridCells cells, a CVT
+// with more than kMaxCvtCells cells, and either key given for a steady-state
+// run (it would be ignored). Records both in the resolved config only for
+// map_elites. `dimension` is the genome size, for the memory check: the full
+// archive's genomes (cells x dimension x 8 bytes) must fit in half the
+// machine's physical memory.
+QdParams read_qd_params(ObjectReader& top, Algorithm algorithm, std::size_t dimension);
+
+// "steady_state" | "map_elites".
+const char* algorithm_name(Algorithm algorithm);
+
+}  // namespace morphogen
