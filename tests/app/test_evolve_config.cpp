@@ -4,6 +4,7 @@
 // shipped configs, defaults and ranges compared key by key).
 #include "app/evolve_test_support.hpp"
 #include "errors.hpp"
+#include "descriptors.hpp"
 #include "experiment_config.hpp"
 
 #include <catch2/catch.hpp>
@@ -155,7 +156,7 @@ TEST_CASE("command-line overrides are checked like keys and recorded", "[app][co
 }
 
 TEST_CASE("shipped configs and the default config are valid under schema.json", "[app][config][schema]") {
-    for (const char* name : {"canopy.json", "quick.json"}) {
+    for (const char* name : {"canopy.json", "quick.json", "map_elites.json"}) {
         INFO(name);
         const auto path = source_dir / "configs" / name;
         const json document = json::parse(read_text(path));
@@ -252,4 +253,122 @@ TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]
     walk(schema, schema, read_experiment_config(json::object(), "{}").resolved, "", probe);
     walk(schema, schema, read_experiment_config(json{{"fitness", {{"type", "light"}}}}, "f").resolved, "", probe);
     CHECK(probed > 25);
+}
+
+TEST_CASE("map_elites configs: descriptors and archive are read, defaulted and checked", "[app][config][map_elites]") {
+    const json document = json::parse(R"({
+        "evolution": {"algorithm": "map_elites"},
+        "descriptors": [{"measure": "height", "min": 0, "max": 20, "bins": 20},
+                        {"measure": "footprint", "min": 0, "max": 400}]
+    })");
+    const ExperimentConfig config = read_experiment_config(document, "me.json");
+    CHECK(config.algorithm == Algorithm::map_elites);
+    REQUIRE(config.qd.descriptors.size() == 2);
+    CHECK(config.qd.descriptors[0].name == "height");
+    CHECK(config.qd.descriptors[0].bins == 20);
+    CHECK(config.qd.descriptors[1].max == 400.0);
+    CHECK(config.qd.descriptors[1].bins == 10);  // default
+    CHECK(config.qd.archive == ArchiveKind::grid);
+    CHECK(config.qd.cells() == 200);
+    CHECK(config.qd.qd_offset == 0.0);
+    CHECK(config.resolved["evolution"]["algorithm"] == "map_elites");
+    CHECK(config.resolved["descriptors"][1]["bins"] == 10);
+    CHECK(config.resolved["archive"] == json{{"type", "grid"}, {"qd_offset", 0.0}});
+    CHECK(schema_errors(document) == "");
+    CHECK(schema_errors(config.resolved) == "");
+    CHECK(read_experiment_config(config.resolved, "resolved").resolved == config.resolved);
+
+    const json cvt = json::parse(R"({"evolution": {"algorithm": "map_elites"},
+        "descriptors": [{"measure": "height", "min": 0, "max": 20}, {"measure": "spread", "min": 0, "max": 4},
+                        {"measure": "lean", "min": 0, "max": 5}, {"measure": "crown_height", "min": 0, "max": 20}],
+        "archive": {"type": "cvt", "cells": 50, "qd_offset": -10}})");
+    const ExperimentConfig c = read_experiment_config(cvt, "cvt.json");
+    CHECK(c.qd.archive == ArchiveKind::cvt);
+    CHECK(c.qd.cells() == 50);
+    CHECK(c.qd.qd_offset == -10.0);
+    CHECK(c.resolved["archive"]["cells"] == 50);
+    CHECK(schema_errors(c.resolved) == "");
+    // the schema's defaults for the archive are the reader's
+    const json schema = schema_document();
+    CHECK(schema["properties"]["archive"]["properties"]["type"]["default"] == config.resolved["archive"]["type"]);
+    for (const char* key : {"cells", "qd_offset"}) {
+        INFO(key);
+        CHECK(schema["properties"]["archive"]["properties"][key]["default"] ==
+              read_experiment_config(json::parse(R"({"evolution": {"algorithm": "map_elites"},
+                  "descriptors": [{"measure": "height", "min": 0, "max": 1}], "archive": {"type": "cvt"}})"), "d")
+                  .resolved["archive"][key]);
+    }
+    // the schema's measures are the library's
+    std::vector<std::string> schema_measures;
+    for (const json& m : schema["definitions"]["descriptor"]["properties"]["measure"]["enum"])
+        schema_measures.push_back(m.get<std::string>());
+    CHECK(schema_measures == descriptor_measure_names());
+}
+
+TEST_CASE("steady_state configs resolve to the same bytes as before map_elites existed", "[app][config][map_elites]") {
+    const ExperimentConfig plain = read_experiment_config(json::object(), "{}");
+    CHECK(plain.algorithm == Algorithm::steady_state);
+    CHECK_FALSE(plain.resolved["evolution"].contains("algorithm"));
+    CHECK_FALSE(plain.resolved.contains("descriptors"));
+    CHECK_FALSE(plain.resolved.contains("archive"));
+    const ExperimentConfig named = read_experiment_config(json{{"evolution", {{"algorithm", "steady_state"}}}}, "x");
+    CHECK(named.resolved == plain.resolved);
+    CHECK(named.resolved.dump(2) == plain.resolved.dump(2));
+    // descriptors or an archive without map_elites would be silently ignored: refused
+    const std::string errors = config_errors(json::parse(
+        R"({"descriptors": [{"measure": "height", "min": 0, "max": 1}], "archive": {"type": "grid"}})"));
+    CHECK_THAT(errors, Catch::Contains("test.json: descriptors: used only when evolution.algorithm is \"map_elites\""));
+    CHECK_THAT(errors, Catch::Contains("test.json: archive: used only when"));
+    CHECK_THAT(config_errors(json{{"evolution", {{"algorithm", "map_elite"}}}}),
+               Catch::Contains("evolution.algorithm: \"map_elite\" is not one of \"steady_state\", \"map_elites\" "
+                               "(did you mean \"map_elites\"?)"));
+}
+
+TEST_CASE("bad descriptor configs are refused all at once with their key paths", "[app][config][map_elites]") {
+    const json document = json::parse(R"({
+        "evolution": {"algorithm": "map_elites"},
+        "descriptors": [{"measure": "heigth", "min": 0, "max": 20, "bins": 20},
+                        {"measure": "footprint", "min": 5, "max": 5},
+                        {"measure": "width", "min": 0, "max": 3, "bins": 0},
+                        {"min": 0, "max": 1, "bins": 2},
+                        {"measure": "area", "max": 1, "colour": 3},
+                        7],
+        "archive": {"type": "grid", "cells": 10, "qd_ofset": 1}
+    })");
+    const std::string errors = config_errors(document);
+    for (const char* expected :
+         {"test.json: descriptors[0].measure: unknown measure \"heigth\" (did you mean \"height\"?)",
+          "test.json: descriptors[1]: min (5.0) must be less than max (5.0)",
+          "test.json: descriptors[2].bins: 0 is out of range [1, 1000000]",
+          "test.json: descriptors[3].measure: required", "test.json: descriptors[4].min: required",
+          "test.json: descriptors[4].colour: unknown key", "test.json: descriptors[5]: expected an object",
+          "test.json: archive.cells: only for a CVT archive",
+          "test.json: archive.qd_ofset: unknown key \"qd_ofset\" (did you mean \"qd_offset\"?)",
+          "test.json: descriptors: 6 descriptors: a grid archive takes 1 to 3"})
+        CHECK_THAT(errors, Catch::Contains(expected));
+    CHECK(schema_errors(document) != "");
+
+    auto me = [](const std::string& rest) {
+        return json::parse(R"({"evolution": {"algorithm": "map_elites"})" + rest + "}");
+    };
+    CHECK_THAT(config_errors(me("")), Catch::Contains("test.json: descriptors: required when evolution.algorithm"));
+    CHECK_THAT(config_errors(me(R"(, "descriptors": [])")), Catch::Contains("descriptors: expected a non-empty array"));
+    CHECK_THAT(config_errors(me(R"(, "descriptors": {"measure": "height"})")),
+               Catch::Contains("descriptors: expected a non-empty array"));
+    CHECK_THAT(config_errors(me(R"(, "descriptors": [{"measure": "height", "min": 0, "max": 1}],
+                                   "archive": {"type": "cvt", "cells": 10001})")),
+               Catch::Contains("archive.cells: 10001 cells is more than a CVT archive places (at most 10000"));
+    CHECK_THAT(config_errors(me(R"(, "descriptors": [{"measure": "height", "min": 0, "max": 1}],
+                                   "archive": {"type": "hexagonal"})")),
+               Catch::Contains("archive.type: \"hexagonal\" is not one of"));
+    // a grid beyond 2^40 cells, and a full archive beyond memory, with the estimate
+    CHECK_THAT(config_errors(me(R"(, "descriptors": [{"measure": "height", "min": 0, "max": 1, "bins": 1000000},
+        {"measure": "area", "min": 0, "max": 1, "bins": 1000000}, {"measure": "width", "min": 0, "max": 1, "bins": 2}])")),
+               Catch::Contains("descriptors: the grid has 2000000000000.0 cells"));
+    const std::string memory = config_errors(me(R"(, "network": {"outputs": 15, "hidden": [30]},
+        "descriptors": [{"measure": "height", "min": 0, "max": 1, "bins": 1000000},
+                        {"measure": "area", "min": 0, "max": 1, "bins": 100000}])"));
+    CHECK_THAT(memory, Catch::Contains("descriptors: a full archive needs"));
+    CHECK_THAT(memory, Catch::Contains("(100000000000 cells x "));
+    CHECK_THAT(memory, Catch::Contains("parameters x 8 bytes), more than"));
 }
