@@ -13,9 +13,10 @@
 namespace morphogen {
 
 namespace {
-std::string why() { return std::strerror(errno); }
+std::string why(int error) { return std::strerror(error); }
 
-// Closes a descriptor on scope exit.
+// Closes a descriptor on scope exit (close() reporting an error is handled
+// by the caller before that).
 struct Fd {
     int fd = -1;
     explicit Fd(int d) : fd(d) {}
@@ -25,41 +26,62 @@ struct Fd {
         if (fd >= 0) ::close(fd);
     }
 };
+
+// Writes, fsyncs and closes the temporary file; returns 0 or the errno of
+// the first failure, with `step` saying which.
+int write_temporary(const std::filesystem::path& temp, std::string_view bytes, const char*& step) {
+    Fd out(::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
+    step = "cannot create";
+    if (out.fd < 0) return errno;
+    step = "cannot write";
+    std::size_t written = 0;
+    while (written < bytes.size()) {
+        const ssize_t n = ::write(out.fd, bytes.data() + written, bytes.size() - written);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return errno;
+        }
+        written += static_cast<std::size_t>(n);
+    }
+    if (::fsync(out.fd) != 0) return errno;  // delayed allocation reports a full disk here
+    const int fd = out.fd;
+    out.fd = -1;
+    if (::close(fd) != 0) return errno;  // and NFS here
+    return 0;
+}
 }  // namespace
 
+std::filesystem::path temporary_path(const std::filesystem::path& path) { return path.string() + ".tmp"; }
+
 void sync_directory(const std::filesystem::path& dir) {
-    Fd d(::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY));
-    if (d.fd < 0) throw IoError(dir.string() + ": cannot open directory: " + why());
-    if (::fsync(d.fd) != 0) throw IoError(dir.string() + ": fsync failed: " + why());
+    Fd d(::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+    if (d.fd < 0) throw IoError(dir.string() + ": cannot open directory: " + why(errno));
+    if (::fsync(d.fd) != 0) throw IoError(dir.string() + ": fsync failed: " + why(errno));
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
-    const std::filesystem::path temp = path.string() + ".tmp";
-    {
-        Fd out(::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
-        if (out.fd < 0) throw IoError(temp.string() + ": cannot create: " + why());
-        std::size_t written = 0;
-        while (written < bytes.size()) {
-            const ssize_t n = ::write(out.fd, bytes.data() + written, bytes.size() - written);
-            if (n < 0) {
-                if (errno == EINTR) continue;
-                throw IoError(temp.string() + ": write failed: " + why());
-            }
-            written += static_cast<std::size_t>(n);
-        }
-        if (::fsync(out.fd) != 0) throw IoError(temp.string() + ": fsync failed: " + why());
+    const std::filesystem::path temp = temporary_path(path);
+    const char* step = "";
+    int error = write_temporary(temp, bytes, step);
+    if (error == 0 && ::rename(temp.c_str(), path.c_str()) != 0) {
+        error = errno;
+        step = "cannot replace";
     }
-    if (::rename(temp.c_str(), path.c_str()) != 0)
-        throw IoError(path.string() + ": cannot replace with " + temp.string() + ": " + why());
+    if (error != 0) {
+        if (std::strcmp(step, "cannot create") != 0) ::unlink(temp.c_str());  // never a file we did not create
+        throw IoError(path.string() + ": " + step + ": " + why(error));
+    }
     sync_directory(path.parent_path());
 }
 
 std::string read_file_bytes(const std::filesystem::path& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) throw IoError(path.string() + ": cannot read: it is a directory");
     std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path.string() + ": cannot open for reading");
+    if (!in) throw IoError(path.string() + ": cannot open for reading: " + why(errno));
     std::ostringstream buffer;
     buffer << in.rdbuf();
-    if (in.bad()) throw IoError(path.string() + ": read failed");
+    if (in.bad()) throw IoError(path.string() + ": read failed: " + why(errno));
     return buffer.str();
 }
 

@@ -804,6 +804,18 @@ void write_mesh(MeshView mesh, const std::string& path, MeshFormat format) {
     }
 }
 
+std::string mesh_bytes(MeshView mesh, MeshFormat format, const std::string& path) {
+    check_indices(mesh, path);
+    switch (format) {
+        case MeshFormat::obj: return obj_bytes(mesh);
+        case MeshFormat::ply: return ply_bytes(mesh);
+        case MeshFormat::off: return off_bytes(mesh);
+        case MeshFormat::stl: return stl_bytes(mesh);
+        case MeshFormat::glb: return glb_bytes(mesh, path);
+    }
+    fail(path, "unknown mesh format");
+}
+
 MeshArrays read_mesh(const std::string& path) {
     const MeshFormat format = mesh_format_from_path(path);
     if (format == MeshFormat::stl || format == MeshFormat::glb)

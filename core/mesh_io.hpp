@@ -19,6 +19,10 @@ MeshFormat mesh_format_from_path(const std::string& path);
 
 void write_mesh(MeshView mesh, const std::string& path);
 void write_mesh(MeshView mesh, const std::string& path, MeshFormat format);
+// The bytes write_mesh would write, for callers that write them their own way
+// (run exports go through write_file_atomically); `path` only names the file
+// in errors.
+std::string mesh_bytes(MeshView mesh, MeshFormat format, const std::string& path);
 
 // Reads vertices and triangles (polygons with more than three corners are
 // fan-triangulated); does not check topology.
