@@ -1,5 +1,7 @@
 #include "stop_signals.hpp"
 
+#include <pthread.h>
+
 #include <csignal>
 
 namespace morphogen {
@@ -22,6 +24,14 @@ StopSignals::StopSignals() {
     sigemptyset(&action.sa_mask);
     sigaction(SIGINT, &action, &g_previous_int);
     sigaction(SIGTERM, &action, &g_previous_term);
+    // A launcher may block these across exec to close the moment before any
+    // of our code runs (a signal then waits, pending); from here on they are
+    // stop requests, so let them in (a pending one arrives right now).
+    sigset_t stops;
+    sigemptyset(&stops);
+    sigaddset(&stops, SIGINT);
+    sigaddset(&stops, SIGTERM);
+    pthread_sigmask(SIG_UNBLOCK, &stops, nullptr);
 }
 
 StopSignals::~StopSignals() {

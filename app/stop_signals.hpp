@@ -5,11 +5,15 @@
 // (the last checkpoint stays valid either way). `evolve` and `resume` make one
 // first thing, before they read or create anything, so a signal during
 // start-up is a stop request like any other, never a death by the signal.
+// Only a signal in the first millisecond or two, while the system still loads
+// the program, ends it by the signal (before anything is written); a launcher
+// that blocks SIGINT/SIGTERM across exec closes that gap too, since the
+// constructor unblocks them.
 namespace morphogen {
 
 class StopSignals {
 public:
-    StopSignals();   // installs the handlers and clears the flag
+    StopSignals();   // installs the handlers, clears the flag, unblocks SIGINT/SIGTERM
     ~StopSignals();  // restores the previous handlers
     StopSignals(const StopSignals&) = delete;
     StopSignals& operator=(const StopSignals&) = delete;
