@@ -132,6 +132,7 @@ void check_checkpoint_content(const RunState& s, const ExperimentConfig& config)
     if (s.lineage_hash.size() != 16 || s.lineage_hash.find_first_not_of("0123456789abcdef") != std::string::npos)
         contradiction("lineage.hash is not 16 lower-case hex digits");
 
+    if (s.ga.best) check_size(*s.ga.best, "ga.best");
     bool any_valid = false;
     for (std::size_t i = 0; i < s.ga.population.size(); ++i) {
         const Individual& member = s.ga.population[i];
@@ -146,7 +147,6 @@ void check_checkpoint_content(const RunState& s, const ExperimentConfig& config)
         if (s.ga.best && member.id == s.ga.best->id && !same(member, *s.ga.best))
             contradiction(where + " has ga.best's id " + std::to_string(member.id) + " but differs from it");
     }
-    if (s.ga.best) check_size(*s.ga.best, "ga.best");
     if (any_valid && !s.ga.best) contradiction("ga.best is null though the population has valid members");
     check_history(s, P);
 }
