@@ -4,6 +4,7 @@
 // `evolve` again where it stopped before its first checkpoint), with exactly
 // the files of an uninterrupted run.
 #include "app/evolve_test_support.hpp"
+#include "atomic_file.hpp"
 #include "checkpoint.hpp"
 
 #include <catch2/catch.hpp>
@@ -318,4 +319,21 @@ TEST_CASE("a full disk: exit 3 with the reason, nothing partial, the checkpoint 
         fs::remove_all(dir);
     }
     CHECK(full >= 5);
+}
+
+TEST_CASE("an atomic write that fails names the file and the reason and leaves nothing behind", "[app][faults]") {
+    TempDir tmp("faults-atomic");
+    const fs::path missing = tmp.path / "no-such-dir" / "f.json";
+    CHECK_THROWS_WITH(write_file_atomically(missing, "x"),
+                      Catch::Contains(missing.string()) && Catch::Contains("No such file or directory"));
+    // The target is a non-empty directory: the rename fails after the temporary was written.
+    fs::create_directories(tmp.path / "d.json" / "inside");
+    CHECK_THROWS_WITH(write_file_atomically(tmp.path / "d.json", "x"),
+                      Catch::Contains("d.json") && Catch::Contains("cannot replace"));
+    CHECK(temporaries(tmp.path).empty());
+    // A success replaces the old contents whole.
+    write_text(tmp.path / "f.json", "old contents, longer than the new");
+    write_file_atomically(tmp.path / "f.json", "new");
+    CHECK(read_text(tmp.path / "f.json") == "new");
+    CHECK(temporaries(tmp.path).empty());
 }
