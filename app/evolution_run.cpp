@@ -48,9 +48,11 @@ RunLoggers make_run_loggers(const RunPaths& paths) {
     for (auto* logger : {&loggers.both, &loggers.file_only}) {
         (*logger)->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [%l] %v");
         (*logger)->flush_on(spdlog::level::info);
-        (*logger)->set_error_handler([failure = loggers.failure](const std::string& message) {
-            if (failure->empty()) *failure = message;
-        });
+        // Only log.txt's failures stop a run: a closed stderr is no reason to.
+        (*logger)->set_error_handler(
+            [failure = loggers.failure, name = paths.log.string()](const std::string& message) {
+                if (failure->empty() && message.find(name) != std::string::npos) *failure = message;
+            });
     }
     console->set_pattern("%v");
     return loggers;

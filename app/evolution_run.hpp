@@ -21,7 +21,7 @@ namespace morphogen {
 struct RunLoggers {
     std::shared_ptr<spdlog::logger> both;       // stderr + log.txt
     std::shared_ptr<spdlog::logger> file_only;  // log.txt
-    // The first failure to write the log (spdlog's message names the file and
+    // The first failure to write log.txt (spdlog's message names the file and
     // the reason), empty while there was none; run_session stops on it.
     std::shared_ptr<std::string> failure;
 };
