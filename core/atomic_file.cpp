@@ -3,6 +3,7 @@
 #include "errors.hpp"
 
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -49,7 +50,6 @@ int write_temporary(const std::filesystem::path& temp, std::string_view bytes, c
     if (::close(fd) != 0) return errno;  // and NFS here
     return 0;
 }
-}  // namespace
 
 std::filesystem::path temporary_path(const std::filesystem::path& path) { return path.string() + ".tmp"; }
 
@@ -59,7 +59,22 @@ void sync_directory(const std::filesystem::path& dir) {
     if (::fsync(d.fd) != 0) throw IoError(dir.string() + ": fsync failed: " + why(errno));
 }
 
+// For a target that is not a regular file (a device, a FIFO, a symlink to
+// one): written in place, since replacing it would be wrong.
+void write_in_place(const std::filesystem::path& path, std::string_view bytes) {
+    Fd out(::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC));
+    if (out.fd < 0) throw IoError(path.string() + ": cannot open for writing: " + why(errno));
+    for (std::size_t written = 0; written < bytes.size();) {
+        const ssize_t n = ::write(out.fd, bytes.data() + written, bytes.size() - written);
+        if (n < 0 && errno != EINTR) throw IoError(path.string() + ": cannot write: " + why(errno));
+        if (n > 0) written += static_cast<std::size_t>(n);
+    }
+}
+}  // namespace
+
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+    struct stat target {};
+    if (::stat(path.c_str(), &target) == 0 && !S_ISREG(target.st_mode)) return write_in_place(path, bytes);
     const std::filesystem::path temp = temporary_path(path);
     const char* step = "";
     int error = write_temporary(temp, bytes, step);

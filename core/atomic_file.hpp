@@ -15,6 +15,8 @@ std::filesystem::path temporary_path(const std::filesystem::path& path);
 // and fsyncs the directory. On any failure the temporary file is removed,
 // `path` keeps its old contents (or stays absent), and IoError names `path`
 // and the system's reason ("<path>: cannot write: No space left on device").
+// A `path` that exists and is not a regular file (a device such as
+// /dev/stdout, a FIFO) is written in place instead: it cannot be replaced.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
 // fsync a directory (so a rename or new file in it is durable). Throws IoError.
 void sync_directory(const std::filesystem::path& dir);

@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include <sys/mount.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -336,4 +337,12 @@ TEST_CASE("an atomic write that fails names the file and the reason and leaves n
     write_file_atomically(tmp.path / "f.json", "new");
     CHECK(read_text(tmp.path / "f.json") == "new");
     CHECK(temporaries(tmp.path).empty());
+}
+
+TEST_CASE("an atomic write to a device writes into it instead of replacing it", "[app][faults]") {
+    write_file_atomically("/dev/null", "bytes");  // as root, a rename would replace /dev/null itself
+    struct stat info {};
+    REQUIRE(::stat("/dev/null", &info) == 0);
+    CHECK(S_ISCHR(info.st_mode));
+    CHECK_FALSE(fs::exists("/dev/null.tmp"));
 }
