@@ -51,14 +51,6 @@ int write_temporary(const std::filesystem::path& temp, std::string_view bytes, c
     return 0;
 }
 
-std::filesystem::path temporary_path(const std::filesystem::path& path) { return path.string() + ".tmp"; }
-
-void sync_directory(const std::filesystem::path& dir) {
-    Fd d(::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
-    if (d.fd < 0) throw IoError(dir.string() + ": cannot open directory: " + why(errno));
-    if (::fsync(d.fd) != 0) throw IoError(dir.string() + ": fsync failed: " + why(errno));
-}
-
 // For a target that is not a regular file (a device, a FIFO, a symlink to
 // one): written in place, since replacing it would be wrong.
 void write_in_place(const std::filesystem::path& path, std::string_view bytes) {
@@ -71,6 +63,14 @@ void write_in_place(const std::filesystem::path& path, std::string_view bytes) {
     }
 }
 }  // namespace
+
+std::filesystem::path temporary_path(const std::filesystem::path& path) { return path.string() + ".tmp"; }
+
+void sync_directory(const std::filesystem::path& dir) {
+    Fd d(::open(dir.empty() ? "." : dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC));
+    if (d.fd < 0) throw IoError(dir.string() + ": cannot open directory: " + why(errno));
+    if (::fsync(d.fd) != 0) throw IoError(dir.string() + ": fsync failed: " + why(errno));
+}
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
     struct stat target {};
