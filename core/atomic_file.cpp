@@ -74,7 +74,8 @@ void sync_directory(const std::filesystem::path& dir) {
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
     struct stat target {};
-    if (::stat(path.c_str(), &target) == 0 && !S_ISREG(target.st_mode)) return write_in_place(path, bytes);
+    if (::stat(path.c_str(), &target) == 0 && !S_ISREG(target.st_mode) && !S_ISDIR(target.st_mode))
+        return write_in_place(path, bytes);
     const std::filesystem::path temp = temporary_path(path);
     const char* step = "";
     int error = write_temporary(temp, bytes, step);
