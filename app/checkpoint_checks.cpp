@@ -2,6 +2,7 @@
 
 #include "run_records.hpp"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <stdexcept>
@@ -87,6 +88,7 @@ std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t bi
         LineageRow row;
         row.text = lineage.substr(pos, end + 1 - pos);
         const std::string_view line = lineage.substr(pos, end - pos);
+        if (std::count(line.begin(), line.end(), ',') != 4) contradiction(where + " does not have 5 cells");
         row.id = parse_u64(line.substr(0, line.find(',')), where);
         if (row.id != rows.size()) contradiction(where + " has id " + std::to_string(row.id) + ", not " +
                                                  std::to_string(rows.size()));
