@@ -13,8 +13,11 @@ namespace morphogen {
 
 class StopSignals {
 public:
-    StopSignals();   // installs the handlers, clears the flag, unblocks SIGINT/SIGTERM
-    ~StopSignals();  // restores the previous handlers
+    // Installs the handlers, clears the flag, unblocks SIGINT/SIGTERM. The
+    // handlers stay until the process exits (the destructor leaves them): a
+    // signal that comes after the work is done, while the process tears down,
+    // changes nothing and must not turn a finished run into a killed one.
+    StopSignals();
     StopSignals(const StopSignals&) = delete;
     StopSignals& operator=(const StopSignals&) = delete;
 
