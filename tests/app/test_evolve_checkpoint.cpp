@@ -3,12 +3,14 @@
 // that contradict themselves or lineage.csv though their hash matches.
 #include "app/evolve_test_support.hpp"
 #include "checkpoint.hpp"
+#include "checkpoint_checks.hpp"
 #include "errors.hpp"
 #include "fnv_hash.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <functional>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -191,4 +193,53 @@ TEST_CASE("a checkpoint that contradicts itself or lineage.csv is refused and le
     }
     write_text(run / "checkpoint.json", good);  // the untouched checkpoint still resumes
     CHECK(run_morphogen("resume '" + run.string() + "' --generations 2").code == 0);
+}
+
+TEST_CASE("invalid births and the best are checked against lineage.csv", "[app][checkpoint]") {
+    // Two generations of two: births 1 and 3 invalid, birth 2 the best.
+    auto born = [](std::uint64_t id, std::optional<std::uint64_t> parent, double fitness) {
+        Individual ind;
+        ind.id = id;
+        ind.parent1 = parent;
+        ind.fitness = fitness;
+        ind.size = 12;
+        ind.params = {0.5};
+        return ind;
+    };
+    const std::vector<Individual> births{born(0, {}, 1.0), born(1, {}, invalid_fitness), born(2, 0, 2.0),
+                                         born(3, 2, invalid_fitness)};
+    std::string lineage = lineage_header;
+    for (const Individual& ind : births) lineage += format_lineage_row(ind);
+    RunState state;
+    state.ga.births = 4;
+    state.ga.population = {births[2], births[0]};
+    state.ga.best = births[2];
+    for (std::uint64_t g = 0; g < 2; ++g) {
+        HistoryRow row;
+        row.generation = g;
+        row.births = 2 * (g + 1);
+        row.invalid = 1;
+        state.history.push_back(row);
+    }
+    REQUIRE_NOTHROW(check_checkpoint_against_lineage(state, lineage, 2));
+
+    RunState bad = state;
+    bad.history[0].invalid = 0;
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(bad, lineage, 2),
+                      Catch::Contains("history[0].invalid is 0, lineage.csv records 1"));
+    bad = state;
+    bad.ga.best = births[0];
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(bad, lineage, 2), Catch::Contains("not the first birth"));
+    bad = state;
+    bad.ga.best.reset();
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(bad, lineage, 2), Catch::Contains("ga.best is null"));
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(state, lineage + "4,4,2,,2\n", 2),
+                      Catch::Contains("records 5 births"));
+    // A later birth as good as the best does not replace it (earliest on ties).
+    RunState later = state;
+    later.ga.births = 5;
+    CHECK_NOTHROW(check_checkpoint_against_lineage(later, lineage + format_lineage_row(born(4, 2, 2.0)), 2));
+    later.ga.invalid_in_generation = 1;
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(later, lineage + format_lineage_row(born(4, 2, 2.0)), 2),
+                      Catch::Contains("invalid_in_generation"));
 }
