@@ -20,14 +20,15 @@ void write_all(int fd, std::string_view text, const std::filesystem::path& path)
         const ssize_t n = ::write(fd, text.data() + written, text.size() - written);
         if (n < 0) {
             if (errno == EINTR) continue;
-            throw IoError(path.string() + ": write failed: " + why());
+            throw IoError(path.string() + ": cannot write: " + why());
         }
         written += static_cast<std::size_t>(n);
     }
 }
 
-Fnv1a64 hash_of_prefix(const std::filesystem::path& path, std::uint64_t length, const std::string& hash_hex) {
-    const std::string bytes = read_file_bytes(path);
+// The file's first `length` bytes, checked against `hash_hex`.
+std::string checked_prefix(const std::filesystem::path& path, std::uint64_t length, const std::string& hash_hex) {
+    std::string bytes = read_file_bytes(path);
     if (bytes.size() < length)
         throw CheckpointError("checkpoint does not match " + path.filename().string() + ": the file has " +
                               std::to_string(bytes.size()) + " bytes, the checkpoint recorded " +
@@ -37,7 +38,8 @@ Fnv1a64 hash_of_prefix(const std::filesystem::path& path, std::uint64_t length, 
     if (hash.hex() != hash_hex)
         throw CheckpointError("checkpoint does not match " + path.filename().string() +
                               ": its first " + std::to_string(length) + " bytes changed since the checkpoint");
-    return hash;
+    bytes.resize(length);
+    return bytes;
 }
 }  // namespace
 
@@ -53,20 +55,23 @@ AppendFile::~AppendFile() {
     if (fd_ >= 0) ::close(fd_);
 }
 
-AppendFile AppendFile::create(const std::filesystem::path& path, std::string_view header) {
-    const int fd = ::open(path.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_APPEND | O_CLOEXEC, 0644);
-    if (fd < 0) throw IoError(path.string() + ": cannot create: " + why());
-    AppendFile file(path, fd, 0, Fnv1a64{});
-    file.write(header);
-    return file;
+AppendFile AppendFile::create(const std::filesystem::path& path, std::string_view initial) {
+    write_file_atomically(path, initial);
+    const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
+    if (fd < 0) throw IoError(path.string() + ": cannot open for appending: " + why());
+    Fnv1a64 hash;
+    hash.update(initial);
+    return AppendFile(path, fd, initial.size(), hash);
 }
 
-void AppendFile::check_prefix(const std::filesystem::path& path, std::uint64_t length, const std::string& hash_hex) {
-    hash_of_prefix(path, length, hash_hex);
+std::string AppendFile::check_prefix(const std::filesystem::path& path, std::uint64_t length,
+                                     const std::string& hash_hex) {
+    return checked_prefix(path, length, hash_hex);
 }
 
 AppendFile AppendFile::resume(const std::filesystem::path& path, std::uint64_t length, const std::string& hash_hex) {
-    const Fnv1a64 hash = hash_of_prefix(path, length, hash_hex);
+    Fnv1a64 hash;
+    hash.update(checked_prefix(path, length, hash_hex));
     const int fd = ::open(path.c_str(), O_WRONLY | O_APPEND | O_CLOEXEC);
     if (fd < 0) throw IoError(path.string() + ": cannot open for appending: " + why());
     AppendFile file(path, fd, length, hash);

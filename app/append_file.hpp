@@ -14,22 +14,25 @@ namespace morphogen {
 
 class AppendFile {
 public:
-    // Creates (or empties) the file and writes `header`.
-    static AppendFile create(const std::filesystem::path& path, std::string_view header);
+    // Creates (or replaces) the file holding `initial` (a header, or a header
+    // and rows), atomically (atomic_file.hpp), and opens it for appending.
+    static AppendFile create(const std::filesystem::path& path, std::string_view initial);
     // Opens an existing file whose first `length` bytes must hash to
     // `hash_hex`; cuts it to that length. Throws CheckpointError if the file is
     // shorter or its prefix differs (it is not touched then), IoError if it
     // cannot be opened.
     static AppendFile resume(const std::filesystem::path& path, std::uint64_t length, const std::string& hash_hex);
-    // Checks what resume() would, without changing anything.
-    static void check_prefix(const std::filesystem::path& path, std::uint64_t length, const std::string& hash_hex);
+    // Checks what resume() would, without changing anything; returns those
+    // first `length` bytes.
+    static std::string check_prefix(const std::filesystem::path& path, std::uint64_t length,
+                                    const std::string& hash_hex);
 
     AppendFile(AppendFile&& other) noexcept;
     AppendFile& operator=(AppendFile&&) = delete;
     AppendFile(const AppendFile&) = delete;
     ~AppendFile();
 
-    void write(std::string_view text);  // throws IoError
+    void write(std::string_view text);  // throws IoError naming the file and the reason
     void sync();                        // fsync; throws IoError
     std::uint64_t size() const { return size_; }
     std::string hash_hex() const { return hash_.hex(); }

@@ -1,6 +1,7 @@
 #include "checkpoint.hpp"
 
 #include "atomic_file.hpp"
+#include "checkpoint_checks.hpp"
 #include "errors.hpp"
 #include "experiment_config.hpp"
 #include "fnv_hash.hpp"
@@ -104,6 +105,11 @@ RunState load_checkpoint(const std::filesystem::path& path) {
         state.lineage_bytes = content.at("lineage").at("bytes").get<std::uint64_t>();
         state.lineage_hash = content.at("lineage").at("hash").get<std::string>();
         state.elapsed_s = content.at("elapsed_s").get<double>();
+        try {
+            check_checkpoint_content(state, config);
+        } catch (const std::invalid_argument& e) {
+            throw refuse(std::string("it contradicts itself: ") + e.what());
+        }
     } catch (const CheckpointError&) {
         throw;
     } catch (const std::exception& e) {

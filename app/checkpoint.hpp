@@ -40,7 +40,8 @@ struct RunState {
 void save_checkpoint(const std::filesystem::path& path, const RunState& state);
 
 // Reads and verifies a checkpoint: envelope (see above), then the content
-// against its own config (parameter counts, population size, ...). Throws
+// against its own config (parameter counts, population size, ...) and against
+// itself (checkpoint_checks.hpp; lineage.csv is the caller's part). Throws
 // CheckpointError whose message contains "checkpoint" and says why; never
 // modifies the file.
 RunState load_checkpoint(const std::filesystem::path& path);

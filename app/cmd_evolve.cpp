@@ -3,8 +3,11 @@
 #include "atomic_file.hpp"
 #include "commands.hpp"
 #include "evolution_run.hpp"
+#include "exit_codes.hpp"
+#include "stop_signals.hpp"
 
 #include <chrono>
+#include <iostream>
 #include <memory>
 
 namespace morphogen {
@@ -19,6 +22,7 @@ struct EvolveOptions {
 };
 
 int run_evolve(const EvolveOptions& o) {
+    StopSignals signals;  // first: a signal during start-up is a stop request too
     ConfigOverrides overrides;
     if (*o.seed_option) overrides.seed = o.seed;
     if (*o.generations_option) overrides.generations = o.generations;
@@ -29,9 +33,20 @@ int run_evolve(const EvolveOptions& o) {
     const RunPaths paths =
         run_paths(o.out.empty() ? default_run_dir(config.run.name, std::chrono::system_clock::now())
                                 : std::filesystem::path(o.out));
+    if (StopSignals::requested()) {
+        std::cerr << "morphogen: stopped by signal " << StopSignals::signal_number() << " before "
+                  << paths.dir.string() << " was touched\n";
+        return exit_code::interrupted;
+    }
+    // Until the first checkpoint is saved the directory is a "stopped start"
+    // (run_directory.hpp), which a new evolve may reuse without --force.
+    const bool restart = is_stopped_start(paths);
     create_run_dir(paths, o.force);
     RunLock lock(paths.dir);
     clear_run_files(paths);
+    RunLoggers log = make_run_loggers(paths);
+    if (restart)
+        log.both->info("{} held a run stopped before its first checkpoint; starting it again", paths.dir.string());
     write_file_atomically(paths.config, config.resolved.dump(2) + "\n");
 
     RunSession session{paths,
@@ -39,10 +54,8 @@ int run_evolve(const EvolveOptions& o) {
                        RunState{},
                        AppendFile::create(paths.history, history_header),
                        AppendFile::create(paths.lineage, lineage_header),
-                       make_run_loggers(paths)};
-    // The first checkpoint (no births yet) makes the directory resumable at once.
-    session.history.sync();
-    session.lineage.sync();
+                       std::move(log)};
+    // The first checkpoint (no births yet) makes the directory resumable.
     session.state.config = config.resolved;
     session.state.seed = config.run.seed;
     session.state.lineage_bytes = session.lineage.size();

@@ -1,15 +1,18 @@
 // `morphogen resume DIR`: continues a run from its checkpoint, exactly as if
 // it had never stopped.
 #include "atomic_file.hpp"
+#include "checkpoint_checks.hpp"
 #include "commands.hpp"
 #include "config_reader.hpp"
 #include "errors.hpp"
 #include "evolution_run.hpp"
 #include "exit_codes.hpp"
+#include "stop_signals.hpp"
 
 #include <filesystem>
 #include <iostream>
 #include <memory>
+#include <stdexcept>
 
 namespace morphogen {
 
@@ -46,11 +49,17 @@ void check_same_experiment(const nlohmann::json& checkpoint_config, const nlohma
 }
 
 int run_resume(const ResumeOptions& o) {
+    StopSignals signals;  // first: a signal during start-up is a stop request too
     const RunPaths paths = run_paths(o.dir);
     if (!std::filesystem::is_directory(paths.dir)) throw IoError("run directory " + o.dir + " does not exist");
-    if (!std::filesystem::exists(paths.checkpoint))
+    if (!std::filesystem::exists(paths.checkpoint)) {
+        if (is_stopped_start(paths))
+            throw CheckpointError("no checkpoint in " + o.dir + ": the run stopped before its first checkpoint, " +
+                                  "so nothing was lost; start it again with: morphogen evolve CONFIG --out " + o.dir);
         throw CheckpointError("no checkpoint in " + o.dir + " (" + paths.checkpoint.string() + " is missing)");
+    }
     RunLock lock(paths.dir);
+    // Check everything before changing anything.
     RunState state = load_checkpoint(paths.checkpoint);
     const nlohmann::json on_disk = load_json_file(paths.config.string());
     check_same_experiment(state.config, on_disk, paths.config.string());
@@ -58,23 +67,36 @@ int run_resume(const ResumeOptions& o) {
     if (*o.generations_option) overrides.generations = o.generations;
     if (*o.threads_option) overrides.threads = o.threads;
     ExperimentConfig config = read_experiment_config(on_disk, paths.config.string(), overrides);
-
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
+    try {
+        check_checkpoint_against_lineage(
+            state, AppendFile::check_prefix(paths.lineage, state.lineage_bytes, state.lineage_hash), P);
+    } catch (const std::invalid_argument& e) {
+        throw CheckpointError("checkpoint " + paths.checkpoint.string() + " refused: it contradicts " +
+                              paths.lineage.string() + ": " + e.what());
+    }
+
     if (state.ga.births >= (config.run.generations + 1) * P) {
         std::cout << o.dir << ": generation " << config.run.generations
                   << " already reached; nothing to do (pass --generations to go further)\n";
         return exit_code::ok;
     }
-    // Check everything before changing anything.
-    AppendFile::check_prefix(paths.lineage, state.lineage_bytes, state.lineage_hash);
     GrowthProblem problem(config);
+    RunLoggers log = make_run_loggers(paths);
+    if (StopSignals::requested()) {
+        log.both->warn("stopped by signal {} before resuming; nothing changed. Continue with: morphogen resume {}",
+                       StopSignals::signal_number(), o.dir);
+        return exit_code::interrupted;
+    }
 
+    // Cut everything written after the checkpoint: rows, exports, temporary files.
+    prepare_resumed_run_files(paths, state.history.size());
     if (config.resolved != on_disk) write_file_atomically(paths.config, config.resolved.dump(2) + "\n");
-    AppendFile history = AppendFile::create(paths.history, history_header);
-    for (const HistoryRow& row : state.history) history.write(format_history_row(row));
+    std::string history_text = history_header;
+    for (const HistoryRow& row : state.history) history_text += format_history_row(row);
+    AppendFile history = AppendFile::create(paths.history, history_text);
     AppendFile lineage = AppendFile::resume(paths.lineage, state.lineage_bytes, state.lineage_hash);
-    RunSession session{paths, config, std::move(state), std::move(history), std::move(lineage),
-                       make_run_loggers(paths)};
+    RunSession session{paths, config, std::move(state), std::move(history), std::move(lineage), std::move(log)};
     session.log.both->info("resuming {} after {} births", o.dir, session.state.ga.births);
     return run_session(session, problem);
 }

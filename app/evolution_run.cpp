@@ -1,5 +1,6 @@
 #include "evolution_run.hpp"
 
+#include "errors.hpp"
 #include "exit_codes.hpp"
 #include "growth_problem.hpp"
 #include "operators.hpp"
@@ -34,13 +35,24 @@ const Individual* best_member(const std::vector<Individual>& population) {
 
 RunLoggers make_run_loggers(const RunPaths& paths) {
     auto console = std::make_shared<spdlog::sinks::stderr_color_sink_mt>();
-    auto file = std::make_shared<spdlog::sinks::basic_file_sink_mt>(paths.log.string(), /*truncate=*/false);
+    std::shared_ptr<spdlog::sinks::basic_file_sink_mt> file;
+    try {
+        file = std::make_shared<spdlog::sinks::basic_file_sink_mt>(paths.log.string(), /*truncate=*/false);
+    } catch (const spdlog::spdlog_ex& e) {
+        throw IoError(paths.log.string() + ": cannot open the log (" + e.what() + ")");
+    }
     RunLoggers loggers;
+    loggers.failure = std::make_shared<std::string>();
     loggers.both = std::make_shared<spdlog::logger>("morphogen", spdlog::sinks_init_list{console, file});
     loggers.file_only = std::make_shared<spdlog::logger>("morphogen", file);
     for (auto* logger : {&loggers.both, &loggers.file_only}) {
         (*logger)->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [%l] %v");
         (*logger)->flush_on(spdlog::level::info);
+        // Only log.txt's failures stop a run: a closed stderr is no reason to.
+        (*logger)->set_error_handler(
+            [failure = loggers.failure, name = paths.log.string()](const std::string& message) {
+                if (failure->empty() && message.find(name) != std::string::npos) *failure = message;
+            });
     }
     console->set_pattern("%v");
     return loggers;
@@ -48,7 +60,8 @@ RunLoggers make_run_loggers(const RunPaths& paths) {
 
 int resolve_threads(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
-int run_session(RunSession& s, GrowthProblem& problem) {
+namespace {
+int run_loop(RunSession& s, GrowthProblem& problem) {
     const ExperimentConfig& config = s.config;
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
     const std::uint64_t target_births = (config.run.generations + 1) * P;
@@ -56,7 +69,6 @@ int run_session(RunSession& s, GrowthProblem& problem) {
     auto& log = s.log.both;
 
     SteadyStateGA ga(config.evolution, config.run.seed, problem, std::move(s.state.ga));
-    StopSignals signals;
     Progress progress(s.log.both, s.log.file_only, target_births, config.run.generations);
     log->info("run directory {}: population {}, generation {}/{} ({} births done), {} threads, seed {}",
               s.paths.dir.string(), P, ga.completed_generations(), config.run.generations, ga.state().births,
@@ -67,7 +79,12 @@ int run_session(RunSession& s, GrowthProblem& problem) {
     auto generation_start = session_start;
     std::uint64_t generation_first_birth = ga.state().births;
 
+    // spdlog reports a failed log write to the handler, not to us: check it.
+    auto check_log = [&] {
+        if (!s.log.failure->empty()) throw IoError(*s.log.failure);
+    };
     auto checkpoint = [&] {
+        check_log();
         s.history.sync();
         s.lineage.sync();
         s.state.config = config.resolved;
@@ -99,6 +116,7 @@ int run_session(RunSession& s, GrowthProblem& problem) {
             }
         }
         s.lineage.write(rows);
+        check_log();
         const std::uint64_t births = ga.state().births;
         progress.batch(births, births / P,
                        ga.state().best ? std::optional<double>(ga.state().best->fitness) : std::nullopt);
@@ -141,6 +159,17 @@ int run_session(RunSession& s, GrowthProblem& problem) {
     else
         log->info("done: generation {} reached; no valid individual", config.run.generations);
     return exit_code::ok;
+}
+
+}  // namespace
+
+int run_session(RunSession& s, GrowthProblem& problem) {
+    try {
+        return run_loop(s, problem);
+    } catch (const IoError& e) {
+        throw IoError(std::string(e.what()) + " (the last checkpoint is intact: free space or fix the file, then " +
+                      "continue with morphogen resume " + s.paths.dir.string() + ")");
+    }
 }
 
 }  // namespace morphogen

@@ -14,15 +14,20 @@
 #include <spdlog/logger.h>
 
 #include <memory>
+#include <string>
 
 namespace morphogen {
 
 struct RunLoggers {
     std::shared_ptr<spdlog::logger> both;       // stderr + log.txt
     std::shared_ptr<spdlog::logger> file_only;  // log.txt
+    // The first failure to write log.txt (spdlog's message names the file and
+    // the reason), empty while there was none; run_session stops on it.
+    std::shared_ptr<std::string> failure;
 };
 
-// Console (stderr) and file sinks; log.txt is appended to.
+// Console (stderr) and file sinks; log.txt is appended to. Throws IoError
+// naming log.txt and the reason if it cannot be opened (e.g. a directory).
 RunLoggers make_run_loggers(const RunPaths& paths);
 
 struct RunSession {
@@ -35,7 +40,10 @@ struct RunSession {
 };
 
 // Returns exit_code::ok when run.generations is complete, exit_code::interrupted
-// after a Ctrl-C/SIGTERM (the checkpoint is saved first).
+// after a Ctrl-C/SIGTERM (the checkpoint is saved first; the caller holds the
+// StopSignals). A file that cannot be written (a row, the log, an export, a
+// checkpoint) throws IoError naming it and the reason; the last checkpoint is
+// then intact and the run can be resumed.
 int run_session(RunSession& session, GrowthProblem& problem);
 
 // The number of worker threads for run.threads (0 = all cores).

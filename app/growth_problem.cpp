@@ -1,11 +1,13 @@
 #include "growth_problem.hpp"
 
+#include "atomic_file.hpp"
 #include "genome_io.hpp"
 #include "mesh_io.hpp"
 #include "network.hpp"
 
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace morphogen {
 
@@ -51,8 +53,10 @@ GrowthState GrowthProblem::grow(std::span<const double> params) const {
 
 void GrowthProblem::export_genome(std::span<const double> params, const std::filesystem::path& stem) const {
     const GrowthState state = grow(params);
-    write_mesh(state.mesh.view(), stem.string() + ".glb");
-    write_mesh(state.mesh.view(), stem.string() + ".obj");
+    for (const auto& [extension, format] : {std::pair{".glb", MeshFormat::glb}, std::pair{".obj", MeshFormat::obj}}) {
+        const std::string path = stem.string() + extension;
+        write_file_atomically(path, encode_mesh(state.mesh.view(), format, {}, path));
+    }
     save_genome(Genome{layers_, std::vector<double>(params.begin(), params.end())}, stem.string() + ".genome.json");
 }
 

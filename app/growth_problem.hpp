@@ -31,7 +31,8 @@ public:
 
     // Grows one genome (single-threaded use, e.g. exporting the best).
     GrowthState grow(std::span<const double> params) const;
-    // Writes <stem>.glb, <stem>.obj and <stem>.genome.json for a genome.
+    // Writes <stem>.glb, <stem>.obj and <stem>.genome.json for a genome, each
+    // atomically (atomic_file.hpp). Throws IoError naming the file and the reason.
     void export_genome(std::span<const double> params, const std::filesystem::path& stem) const;
 
 private:

@@ -1,14 +1,22 @@
 #include "run_directory.hpp"
 
+#include "atomic_file.hpp"
 #include "errors.hpp"
+#include "run_records.hpp"
 
 #include <fcntl.h>
 #include <sys/file.h>
 #include <unistd.h>
 
+#include <cerrno>
+#include <charconv>
 #include <cstdio>
+#include <cstring>
 #include <ctime>
+#include <optional>
+#include <string_view>
 #include <system_error>
+#include <vector>
 
 namespace morphogen {
 
@@ -39,36 +47,110 @@ fs::path default_run_dir(const std::string& name, std::chrono::system_clock::tim
     return fs::path("runs") / (name + "-" + stamp);
 }
 
+namespace {
+[[noreturn]] void fail(const fs::path& path, const std::string& what, const std::error_code& ec) {
+    throw IoError(path.string() + ": " + what + ": " + ec.message());
+}
+
+void remove_file(const fs::path& path) {
+    std::error_code ec;
+    if (!fs::is_directory(fs::symlink_status(path, ec)) && !fs::remove(path, ec) && ec) fail(path, "cannot remove", ec);
+}
+
+// Whether `path` is missing or holds a prefix of `header` (no data row).
+bool holds_no_rows(const fs::path& path, std::string_view header) {
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(path, ec))) return true;
+    if (!fs::is_regular_file(fs::symlink_status(path, ec))) return false;
+    try {
+        const std::string bytes = read_file_bytes(path);
+        return bytes.size() <= header.size() && header.substr(0, bytes.size()) == bytes;
+    } catch (const IoError&) {
+        return false;
+    }
+}
+
+bool ends_with(const std::string& text, std::string_view tail) {
+    return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+// The generation of best/gen_NNNN<anything>, if the name has that form.
+std::optional<std::uint64_t> export_generation(const std::string& name) {
+    if (name.rfind("gen_", 0) != 0) return std::nullopt;
+    std::uint64_t generation = 0;
+    const char* first = name.data() + 4;
+    const auto [end, error] = std::from_chars(first, name.data() + name.size(), generation);
+    if (error != std::errc() || end == first) return std::nullopt;
+    return generation;
+}
+}  // namespace
+
+bool is_stopped_start(const RunPaths& paths) {
+    std::error_code ec;
+    if (!fs::is_directory(paths.dir, ec) || fs::exists(fs::symlink_status(paths.checkpoint, ec))) return false;
+    if (fs::is_empty(paths.dir, ec)) return false;
+    const std::vector<fs::path> ours{paths.config, paths.history, paths.lineage, paths.log, paths.dir / ".lock"};
+    for (const auto& entry : fs::directory_iterator(paths.dir, ec)) {
+        const fs::path& p = entry.path();
+        if (p == paths.best) {
+            if (!fs::is_directory(fs::symlink_status(p, ec)) || !fs::is_empty(p, ec)) return false;
+            continue;
+        }
+        bool known = false;
+        for (const fs::path& name : ours) known = known || p == name || p == temporary_path(name);
+        known = known || p == temporary_path(paths.checkpoint);
+        if (!known) return false;
+    }
+    if (ec) return false;
+    return holds_no_rows(paths.history, history_header) && holds_no_rows(paths.lineage, lineage_header);
+}
+
 void create_run_dir(const RunPaths& paths, bool force) {
     std::error_code ec;
     if (fs::exists(paths.dir, ec)) {
         if (!fs::is_directory(paths.dir, ec))
             throw IoError(paths.dir.string() + " exists and is not a directory");
-        if (!fs::is_empty(paths.dir, ec) && !force)
+        if (!fs::is_empty(paths.dir, ec) && !force && !is_stopped_start(paths))
             throw IoError("run directory " + paths.dir.string() +
                           " already exists and is not empty (use --force to overwrite it, or resume it)");
     }
     fs::create_directories(paths.dir, ec);
-    if (ec) throw IoError(paths.dir.string() + ": cannot create: " + ec.message());
+    if (ec) fail(paths.dir, "cannot create", ec);
 }
 
 void clear_run_files(const RunPaths& paths) {
+    for (const fs::path& p : {paths.config, paths.history, paths.lineage, paths.checkpoint, paths.log}) {
+        remove_file(p);
+        remove_file(temporary_path(p));
+    }
     std::error_code ec;
-    for (const fs::path& p : {paths.config, paths.history, paths.lineage, paths.checkpoint, paths.log,
-                              fs::path(paths.checkpoint.string() + ".tmp"), fs::path(paths.config.string() + ".tmp")})
-        fs::remove(p, ec);
     if (fs::is_directory(paths.best, ec)) {
         for (const auto& entry : fs::directory_iterator(paths.best, ec))
-            if (entry.path().filename().string().rfind("gen_", 0) == 0) fs::remove(entry.path(), ec);
+            if (entry.path().filename().string().rfind("gen_", 0) == 0) remove_file(entry.path());
+        if (ec) fail(paths.best, "cannot list", ec);
     }
     fs::create_directories(paths.best, ec);
-    if (ec) throw IoError(paths.best.string() + ": cannot create: " + ec.message());
+    if (ec) fail(paths.best, "cannot create", ec);
+}
+
+void prepare_resumed_run_files(const RunPaths& paths, std::uint64_t first_generation) {
+    for (const fs::path& p : {paths.config, paths.history, paths.lineage, paths.checkpoint})
+        remove_file(temporary_path(p));
+    std::error_code ec;
+    fs::create_directories(paths.best, ec);
+    if (ec) fail(paths.best, "cannot create", ec);
+    for (const auto& entry : fs::directory_iterator(paths.best, ec)) {
+        const std::string name = entry.path().filename().string();
+        const std::optional<std::uint64_t> generation = export_generation(name);
+        if (generation && (*generation >= first_generation || ends_with(name, ".tmp"))) remove_file(entry.path());
+    }
+    if (ec) fail(paths.best, "cannot list", ec);
 }
 
 RunLock::RunLock(const fs::path& dir) {
     const fs::path path = dir / ".lock";
     fd_ = ::open(path.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
-    if (fd_ < 0) throw IoError(path.string() + ": cannot open the run lock");
+    if (fd_ < 0) throw IoError(path.string() + ": cannot open the run lock: " + std::strerror(errno));
     if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
         ::close(fd_);
         fd_ = -1;

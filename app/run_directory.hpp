@@ -2,6 +2,7 @@
 // The run directory (DESIGN.md "Run directory"): where its files live, how a
 // new one is made, and a lock so two processes never write one run.
 #include <chrono>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 
@@ -18,14 +19,27 @@ RunPaths run_paths(const std::filesystem::path& dir);
 // runs/<name>-<YYYYmmdd-HHMMSS> (local time).
 std::filesystem::path default_run_dir(const std::string& name, std::chrono::system_clock::time_point now);
 
+// A run stopped before its first checkpoint (kill -9, power loss or a full
+// disk during start-up): a non-empty directory with no checkpoint.json and
+// nothing but morphogen's own names in it (config.json, history.csv,
+// lineage.csv, log.txt, .lock, their .tmp files, an empty best/), where
+// history.csv and lineage.csv hold no rows. Nothing of value is in it, so `evolve` may start over there.
+bool is_stopped_start(const RunPaths& paths);
+
 // For a new run: refuses (IoError saying it exists) an existing non-empty
-// directory unless `force`, and a path that is not a directory; then creates
-// the directory. Take the RunLock next, then clear_run_files().
+// directory unless `force` or it is_stopped_start(), and a path that is not a
+// directory; then creates the directory. Take the RunLock next, then
+// clear_run_files().
 void create_run_dir(const RunPaths& paths, bool force);
 // Removes the files morphogen writes in a run directory (config.json,
-// history.csv, lineage.csv, checkpoint.json, log.txt, best/gen_*) and nothing
-// else; creates best/.
+// history.csv, lineage.csv, checkpoint.json, log.txt, best/gen_*, and their
+// temporary files) and nothing else; creates best/.
 void clear_run_files(const RunPaths& paths);
+// For a resume: removes temporary files a crash left (<file>.tmp in the run
+// directory and best/) and the exports of generations >= `first_generation`
+// (written after the checkpoint; the resumed run writes them again); creates
+// best/ if it is missing. Throws IoError naming the file and the reason.
+void prepare_resumed_run_files(const RunPaths& paths, std::uint64_t first_generation);
 
 // An exclusive advisory lock on <dir>/.lock for this object's life; throws
 // IoError if another process holds it.

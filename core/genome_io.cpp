@@ -1,5 +1,6 @@
 #include "genome_io.hpp"
 
+#include "atomic_file.hpp"
 #include "config_reader.hpp"
 #include "errors.hpp"
 #include "json_text.hpp"
@@ -60,11 +61,7 @@ Genome genome_from_json(const json& document, const std::string& source) {
 }
 
 void save_genome(const Genome& genome, const std::string& path) {
-    std::ofstream out(path, std::ios::binary | std::ios::trunc);
-    if (!out) throw IoError(path + ": cannot open for writing");
-    out << genome_to_json(genome).dump() << '\n';
-    out.close();
-    if (!out) throw IoError(path + ": write failed");
+    write_file_atomically(path, genome_to_json(genome).dump() + "\n");
 }
 
 Genome load_genome(const std::string& path) {

@@ -15,6 +15,7 @@ nlohmann::json genome_to_json(const Genome& genome);
 // that do not match the layers, non-finite parameters).
 Genome genome_from_json(const nlohmann::json& document, const std::string& source);
 
+// Written atomically (atomic_file.hpp); IoError names the file and the reason.
 void save_genome(const Genome& genome, const std::string& path);
 Genome load_genome(const std::string& path);
 

@@ -3,6 +3,8 @@
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -30,9 +32,21 @@ CliResult run_morphogen(const std::string& args) {
     return result;
 }
 
-int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log) {
+int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log, bool block_stop_signals) {
+    // Blocked around fork, so a signal never meets the child while it is still
+    // a copy of this test (with Catch's handlers): it gets the default action
+    // first, and the signals are unblocked again unless the caller asked.
+    sigset_t stops, before;
+    sigemptyset(&stops);
+    sigaddset(&stops, SIGINT);
+    sigaddset(&stops, SIGTERM);
+    ::pthread_sigmask(SIG_BLOCK, &stops, &before);
     const pid_t pid = ::fork();
+    if (pid != 0) ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
     if (pid == 0) {
+        ::signal(SIGINT, SIG_DFL);
+        ::signal(SIGTERM, SIG_DFL);
+        if (!block_stop_signals) ::pthread_sigmask(SIG_SETMASK, &before, nullptr);
         const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         ::dup2(fd, 1);
         ::dup2(fd, 2);
@@ -47,9 +61,10 @@ int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log) {
     return pid;
 }
 
-int wait_for(int pid) {
+int wait_for(int pid, bool* killed) {
     int status = 0;
     ::waitpid(pid, &status, 0);
+    if (killed != nullptr) *killed = WIFSIGNALED(status);
     return decode_status(status);
 }
 

@@ -25,10 +25,13 @@ struct CliResult {
 // Runs `morphogen <args>` (args are passed through the shell).
 CliResult run_morphogen(const std::string& args);
 
-// Starts `morphogen <args...>` without waiting; output goes to `log`.
-int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log);
-// Waits for a spawned process; returns its exit status (128 + signal if killed).
-int wait_for(int pid);
+// Starts `morphogen <args...>` without waiting; output goes to `log`. With
+// `block_stop_signals` it starts with SIGINT and SIGTERM blocked (a signal
+// sent at once then waits until morphogen's handlers are in place).
+int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log, bool block_stop_signals = false);
+// Waits for a spawned process; returns its exit status (128 + signal if
+// killed; `killed`, if given, tells the two apart).
+int wait_for(int pid, bool* killed = nullptr);
 
 // A config small enough for a run to take milliseconds.
 std::string tiny_config(int generations, int population = 8, int batch = 3);

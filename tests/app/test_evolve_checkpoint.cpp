@@ -1,10 +1,18 @@
 // Checkpoint files: exact round trip, and refusal of every truncation and
-// every single changed byte, of other versions and formats.
+// every single changed byte, of other versions and formats, and of contents
+// that contradict themselves or lineage.csv though their hash matches.
 #include "app/evolve_test_support.hpp"
 #include "checkpoint.hpp"
+#include "checkpoint_checks.hpp"
 #include "errors.hpp"
+#include "fnv_hash.hpp"
 
 #include <catch2/catch.hpp>
+
+#include <functional>
+#include <optional>
+#include <utility>
+#include <vector>
 
 using namespace morphogen;
 using namespace morphogen::test;
@@ -116,4 +124,122 @@ TEST_CASE("other versions and formats and unfitting contents are refused with a 
     c = content;
     c["history"].erase(1);
     refused(c, "history");
+}
+
+TEST_CASE("a checkpoint that contradicts itself or lineage.csv is refused and left as it was",
+          "[app][checkpoint][resume]") {
+    TempDir tmp("checkpoint-contradictions");
+    write_text(tmp.path / "tiny.json", tiny_config(2, 8, 3));
+    const auto run = tmp.path / "run";
+    const CliResult made =
+        run_morphogen("evolve '" + (tmp.path / "tiny.json").string() + "' --out '" + run.string() + "' --generations 1");
+    REQUIRE(made.code == 0);
+    const std::string good = read_text(run / "checkpoint.json"), lineage = read_text(run / "lineage.csv"),
+                      history = read_text(run / "history.csv");
+    const nlohmann::json content = checkpoint_content(good, "good");
+    REQUIRE(content["ga"]["births"] == 16);
+
+    // Each edit keeps the hash right (checkpoint_text), so only the contradiction can refuse it.
+    auto refused = [&](const nlohmann::json& changed, const std::string& why) {
+        const std::string text = checkpoint_text(changed);
+        write_text(run / "checkpoint.json", text);
+        const CliResult r = run_morphogen("resume '" + run.string() + "' --generations 2");
+        CHECK(r.code == 5);
+        CHECK_THAT(r.output, Catch::Contains("checkpoint") && Catch::Contains(why));
+        CHECK(read_text(run / "checkpoint.json") == text);
+        CHECK(read_text(run / "lineage.csv") == lineage);
+        CHECK(read_text(run / "history.csv") == history);
+    };
+    const double best = content["ga"]["best"]["fitness"].get<double>();
+    std::size_t child = 0;  // a member born after generation 0 (it has parents), not the best
+    while (content["ga"]["population"][child]["parent1"].is_null() ||
+           content["ga"]["population"][child]["id"] == content["ga"]["best"]["id"])
+        ++child;
+    // lineage.csv without its last row, and that prefix's hash.
+    const std::string shorter = lineage.substr(0, lineage.rfind('\n', lineage.size() - 2) + 1);
+
+    std::vector<std::pair<std::function<void(nlohmann::json&)>, std::string>> edits{
+        {[](nlohmann::json& c) { c["ga"]["births"] = 17, c["config"]["run"]["generations"] = 2; }, "lineage.csv records 16 births"},
+        {[](nlohmann::json& c) { c["ga"]["population"][0]["size"] = -1; }, "not a vertex count"},
+        {[](nlohmann::json& c) { c["ga"]["population"][1]["size"] = 2.5; }, "not a vertex count"},
+        {[](nlohmann::json& c) { c["ga"]["best"]["size"] = -3; }, "ga.best.size"},
+        {[](nlohmann::json& c) { c["elapsed_s"] = -1; }, "elapsed_s is -1"},
+        {[](nlohmann::json& c) { c["history"][1]["births"] = 15; }, "history[1].births"},
+        {[](nlohmann::json& c) { c["history"][0]["elapsed_s"] = c["elapsed_s"].get<double>() + 1; }, "elapsed_s"},
+        {[](nlohmann::json& c) { c["history"][0]["births_per_s"] = -1; }, "births_per_s"},
+        {[](nlohmann::json& c) { c["history"][1]["invalid"] = c["history"][1]["invalid"].get<int>() + 1; }, "invalid"},
+        {[](nlohmann::json& c) { c["history"][1]["invalid"] = 9; }, "more than the 8 births"},
+        {[&](nlohmann::json& c) { c["history"][0]["best"] = best + 1; }, "better than the best individual ever born"},
+        {[](nlohmann::json& c) { c["history"][0]["worst"] = c["history"][0]["best"].get<double>() + 1e-3; }, "not in order"},
+        {[](nlohmann::json& c) { c["history"][0]["mean"] = nullptr; }, "statistics are missing"},
+        {[&](nlohmann::json& c) { c["ga"]["best"]["fitness"] = best + 1; }, "ga.best"},
+        {[](nlohmann::json& c) { c["ga"]["best"] = nullptr; }, "ga.best is null"},
+        {[](nlohmann::json& c) { c["ga"]["population"][2]["fitness"] = c["ga"]["population"][2]["fitness"].get<double>() - 0.25; },
+         "differs from its lineage.csv row"},
+        {[&](nlohmann::json& c) { c["ga"]["population"][child]["parent2"] = nullptr, c["ga"]["population"][child]["parent1"] = nullptr; },
+         "differs from its lineage.csv row"},
+        {[&](nlohmann::json& c) { c["lineage"] = {{"bytes", shorter.size()}, {"hash", fnv1a64_hex(shorter)}}; },
+         "lineage.csv records 15 births"},
+        {[](nlohmann::json& c) { c["lineage"]["hash"] = "ABCDEF0123456789"; }, "hex"},
+        {[](nlohmann::json& c) { c["lineage"]["bytes"] = 3; }, "header"},
+        {[](nlohmann::json& c) { c["config"]["run"]["generations"] = 0; }, "beyond"},
+    };
+    for (std::size_t i = 0; i < edits.size(); ++i) {
+        CAPTURE(i, edits[i].second);
+        nlohmann::json changed = content;
+        edits[i].first(changed);
+        REQUIRE(changed != content);
+        refused(changed, edits[i].second);
+    }
+    write_text(run / "checkpoint.json", good);  // the untouched checkpoint still resumes
+    CHECK(run_morphogen("resume '" + run.string() + "' --generations 2").code == 0);
+}
+
+TEST_CASE("invalid births and the best are checked against lineage.csv", "[app][checkpoint]") {
+    // Two generations of two: births 1 and 3 invalid, birth 2 the best.
+    auto born = [](std::uint64_t id, std::optional<std::uint64_t> parent, double fitness) {
+        Individual ind;
+        ind.id = id;
+        ind.parent1 = parent;
+        ind.fitness = fitness;
+        ind.size = 12;
+        ind.params = {0.5};
+        return ind;
+    };
+    const std::vector<Individual> births{born(0, {}, 1.0), born(1, {}, invalid_fitness), born(2, 0, 2.0),
+                                         born(3, 2, invalid_fitness)};
+    std::string lineage = lineage_header;
+    for (const Individual& ind : births) lineage += format_lineage_row(ind);
+    RunState state;
+    state.ga.births = 4;
+    state.ga.population = {births[2], births[0]};
+    state.ga.best = births[2];
+    for (std::uint64_t g = 0; g < 2; ++g) {
+        HistoryRow row;
+        row.generation = g;
+        row.births = 2 * (g + 1);
+        row.invalid = 1;
+        state.history.push_back(row);
+    }
+    REQUIRE_NOTHROW(check_checkpoint_against_lineage(state, lineage, 2));
+
+    RunState bad = state;
+    bad.history[0].invalid = 0;
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(bad, lineage, 2),
+                      Catch::Contains("history[0].invalid is 0, lineage.csv records 1"));
+    bad = state;
+    bad.ga.best = births[0];
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(bad, lineage, 2), Catch::Contains("not the first birth"));
+    bad = state;
+    bad.ga.best.reset();
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(bad, lineage, 2), Catch::Contains("ga.best is null"));
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(state, lineage + "4,4,2,,2\n", 2),
+                      Catch::Contains("records 5 births"));
+    // A later birth as good as the best does not replace it (earliest on ties).
+    RunState later = state;
+    later.ga.births = 5;
+    CHECK_NOTHROW(check_checkpoint_against_lineage(later, lineage + format_lineage_row(born(4, 2, 2.0)), 2));
+    later.ga.invalid_in_generation = 1;
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(later, lineage + format_lineage_row(born(4, 2, 2.0)), 2),
+                      Catch::Contains("invalid_in_generation"));
 }

@@ -1,0 +1,183 @@
+#include "checkpoint_checks.hpp"
+
+#include "run_records.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace morphogen {
+
+namespace {
+[[noreturn]] void contradiction(const std::string& what) { throw std::invalid_argument(what); }
+
+std::string at(const char* field, std::size_t index) { return std::string(field) + "[" + std::to_string(index) + "]"; }
+
+bool is_vertex_count(double size) { return std::isfinite(size) && size >= 0 && size == std::floor(size); }
+
+void check_size(const Individual& ind, const std::string& where) {
+    if (!is_vertex_count(ind.size))
+        contradiction(where + ".size is " + format_number(ind.size) + ", not a vertex count (a whole number >= 0)");
+}
+
+bool same(const Individual& a, const Individual& b) {
+    return a.id == b.id && a.parent1 == b.parent1 && a.parent2 == b.parent2 && a.params == b.params &&
+           (a.fitness == b.fitness || (!a.valid() && !b.valid())) && a.size == b.size;
+}
+
+void check_history(const RunState& s, std::uint64_t P) {
+    double previous_elapsed = 0.0;
+    for (std::size_t g = 0; g < s.history.size(); ++g) {
+        const HistoryRow& row = s.history[g];
+        const std::string where = at("history", g);
+        if (row.births != (g + 1) * P)
+            contradiction(where + ".births is " + std::to_string(row.births) + ", generation " + std::to_string(g) +
+                          " ends at birth " + std::to_string((g + 1) * P));
+        if (row.invalid > P)
+            contradiction(where + ".invalid is " + std::to_string(row.invalid) + ", more than the " +
+                          std::to_string(P) + " births of a generation");
+        const bool any = row.best || row.mean || row.median || row.worst || row.mean_vertices;
+        const bool all = row.best && row.mean && row.median && row.worst && row.mean_vertices;
+        if (any != all) contradiction(where + ": some population statistics are missing and others are not");
+        if (all) {
+            if (!(*row.worst <= *row.median && *row.median <= *row.best))
+                contradiction(where + ": worst, median and best are not in order");
+            if (!(*row.mean_vertices >= 0)) contradiction(where + ".mean_vertices is negative");
+            if (!s.ga.best || *row.best > s.ga.best->fitness)
+                contradiction(where + ".best is better than the best individual ever born (ga.best)");
+        }
+        if (!std::isfinite(row.births_per_s) || row.births_per_s < 0)
+            contradiction(where + ".births_per_s is " + format_number(row.births_per_s) + ", not a rate >= 0");
+        if (!std::isfinite(row.elapsed_s) || row.elapsed_s < previous_elapsed)
+            contradiction(where + ".elapsed_s is " + format_number(row.elapsed_s) +
+                          ", negative or before the previous row's");
+        previous_elapsed = row.elapsed_s;
+    }
+    if (previous_elapsed > s.elapsed_s)
+        contradiction("elapsed_s is " + format_number(s.elapsed_s) + ", before the last history row's " +
+                      format_number(previous_elapsed));
+}
+
+// One lineage.csv row, parsed.
+struct LineageRow {
+    std::uint64_t id = 0;
+    std::string_view text;  // the row with its newline
+    bool valid = false;
+    double fitness = 0.0;
+};
+
+std::uint64_t parse_u64(std::string_view cell, const std::string& where) {
+    std::uint64_t value = 0;
+    const auto [end, error] = std::from_chars(cell.data(), cell.data() + cell.size(), value);
+    if (error != std::errc() || end != cell.data() + cell.size()) contradiction(where + ": not a birth index");
+    return value;
+}
+
+std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t births) {
+    const std::string_view header = lineage_header;
+    if (lineage.substr(0, header.size()) != header) contradiction("lineage.csv does not start with its header");
+    std::vector<LineageRow> rows;
+    std::size_t pos = header.size();
+    while (pos < lineage.size()) {
+        const std::size_t end = lineage.find('\n', pos);
+        const std::string where = "lineage.csv row " + std::to_string(rows.size() + 1);
+        if (end == std::string_view::npos) contradiction(where + " has no end of line");
+        LineageRow row;
+        row.text = lineage.substr(pos, end + 1 - pos);
+        const std::string_view line = lineage.substr(pos, end - pos);
+        if (std::count(line.begin(), line.end(), ',') != 4) contradiction(where + " does not have 5 cells");
+        row.id = parse_u64(line.substr(0, line.find(',')), where);
+        if (row.id != rows.size()) contradiction(where + " has id " + std::to_string(row.id) + ", not " +
+                                                 std::to_string(rows.size()));
+        const std::string_view fitness = line.substr(line.rfind(',') + 1);
+        if (!fitness.empty()) {
+            const auto [stop, error] = std::from_chars(fitness.data(), fitness.data() + fitness.size(), row.fitness);
+            if (error != std::errc() || stop != fitness.data() + fitness.size() || !std::isfinite(row.fitness))
+                contradiction(where + ": the fitness is not a number");
+            row.valid = true;
+        }
+        rows.push_back(row);
+        pos = end + 1;
+    }
+    if (rows.size() != births)
+        contradiction("ga.births is " + std::to_string(births) + " but lineage.csv records " +
+                      std::to_string(rows.size()) + " births");
+    return rows;
+}
+
+void check_recorded(const Individual& ind, const std::vector<LineageRow>& rows, const std::string& where) {
+    if (format_lineage_row(ind) != rows.at(ind.id).text)
+        contradiction(where + " (id " + std::to_string(ind.id) + ") differs from its lineage.csv row");
+}
+
+std::uint64_t invalid_between(const std::vector<LineageRow>& rows, std::uint64_t first, std::uint64_t end) {
+    std::uint64_t invalid = 0;
+    for (std::uint64_t i = first; i < end; ++i) invalid += rows[i].valid ? 0 : 1;
+    return invalid;
+}
+}  // namespace
+
+void check_checkpoint_content(const RunState& s, const ExperimentConfig& config) {
+    const auto P = static_cast<std::uint64_t>(config.evolution.population);
+    const std::uint64_t births = s.ga.births;
+    if (!std::isfinite(s.elapsed_s) || s.elapsed_s < 0)
+        contradiction("elapsed_s is " + format_number(s.elapsed_s) + ", not a duration >= 0");
+    if (births > (config.run.generations + 1) * P)
+        contradiction("ga.births is " + std::to_string(births) + ", beyond the " +
+                      std::to_string((config.run.generations + 1) * P) + " births of its run.generations " +
+                      std::to_string(config.run.generations));
+    if (s.lineage_bytes < std::string_view(lineage_header).size())
+        contradiction("lineage.bytes is " + std::to_string(s.lineage_bytes) + ", shorter than lineage.csv's header");
+    if (s.lineage_hash.size() != 16 || s.lineage_hash.find_first_not_of("0123456789abcdef") != std::string::npos)
+        contradiction("lineage.hash is not 16 lower-case hex digits");
+
+    if (s.ga.best) check_size(*s.ga.best, "ga.best");
+    bool any_valid = false;
+    for (std::size_t i = 0; i < s.ga.population.size(); ++i) {
+        const Individual& member = s.ga.population[i];
+        const std::string where = at("ga.population", i);
+        check_size(member, where);
+        if (births <= P && (member.id != i || member.parent1))
+            contradiction(where + ": in generation 0 slot " + std::to_string(i) + " holds birth " +
+                          std::to_string(i) + ", which has no parents");
+        any_valid = any_valid || member.valid();
+        if (s.ga.best && member.valid() && member.fitness > s.ga.best->fitness)
+            contradiction(where + " (id " + std::to_string(member.id) + ") is better than ga.best");
+        if (s.ga.best && member.id == s.ga.best->id && !same(member, *s.ga.best))
+            contradiction(where + " has ga.best's id " + std::to_string(member.id) + " but differs from it");
+    }
+    if (any_valid && !s.ga.best) contradiction("ga.best is null though the population has valid members");
+    check_history(s, P);
+}
+
+void check_checkpoint_against_lineage(const RunState& s, std::string_view lineage, std::uint64_t P) {
+    const std::vector<LineageRow> rows = parse_lineage(lineage, s.ga.births);
+    for (std::size_t i = 0; i < s.ga.population.size(); ++i) check_recorded(s.ga.population[i], rows, at("ga.population", i));
+    const LineageRow* first_best = nullptr;
+    for (const LineageRow& row : rows)
+        if (row.valid && (first_best == nullptr || row.fitness > first_best->fitness)) first_best = &row;
+    if (s.ga.best) {
+        check_recorded(*s.ga.best, rows, "ga.best");
+        if (first_best == nullptr || first_best->id != s.ga.best->id)
+            contradiction("ga.best (id " + std::to_string(s.ga.best->id) +
+                          ") is not the first birth of the highest fitness in lineage.csv");
+    } else if (first_best != nullptr) {
+        contradiction("ga.best is null but lineage.csv records valid birth " + std::to_string(first_best->id));
+    }
+    for (std::size_t g = 0; g < s.history.size(); ++g) {
+        const std::uint64_t invalid = invalid_between(rows, g * P, (g + 1) * P);
+        if (s.history[g].invalid != invalid)
+            contradiction(at("history", g) + ".invalid is " + std::to_string(s.history[g].invalid) +
+                          ", lineage.csv records " + std::to_string(invalid) + " invalid births in generation " +
+                          std::to_string(g));
+    }
+    const std::uint64_t current = s.history.size() * P;
+    if (s.ga.invalid_in_generation != invalid_between(rows, current, s.ga.births))
+        contradiction("ga.invalid_in_generation is " + std::to_string(s.ga.invalid_in_generation) +
+                      ", lineage.csv records " + std::to_string(invalid_between(rows, current, s.ga.births)));
+}
+
+}  // namespace morphogen

@@ -1,0 +1,26 @@
+#pragma once
+// Durable file updates: a reader (or a resume after kill -9 or power loss)
+// sees either the old file or the new one, never a mix, and a failed write
+// leaves nothing behind but the old file.
+#include <filesystem>
+#include <string>
+#include <string_view>
+
+namespace morphogen {
+
+// The temporary name write_file_atomically uses for `path` (<path>.tmp).
+std::filesystem::path temporary_path(const std::filesystem::path& path);
+
+// Writes `bytes` to temporary_path(path), fsyncs it, renames it over `path`
+// and fsyncs the directory. On any failure the temporary file is removed,
+// `path` keeps its old contents (or stays absent), and IoError names `path`
+// and the system's reason ("<path>: cannot write: No space left on device").
+// A `path` that exists and is not a regular file (a device such as
+// /dev/stdout, a FIFO) is written in place instead: it cannot be replaced.
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+// fsync a directory (so a rename or new file in it is durable). Throws IoError.
+void sync_directory(const std::filesystem::path& dir);
+// The whole file as bytes. Throws IoError naming the file and the reason.
+std::string read_file_bytes(const std::filesystem::path& path);
+
+}  // namespace morphogen
