@@ -61,6 +61,10 @@ Individual read_individual(const json& object, std::size_t dimension, const std:
 }
 }  // namespace
 
+Individual individual_from_json(const json& object, std::size_t dimension, const std::string& path) {
+    return read_individual(object, dimension, path);
+}
+
 json individual_to_json(const Individual& ind) {
     json out = json::object();
     out["id"] = ind.id;

@@ -8,9 +8,15 @@
 
 #include <nlohmann/json.hpp>
 
+#include <string>
+
 namespace morphogen {
 
 nlohmann::json individual_to_json(const Individual& individual);
+// Reads one individual stored by individual_to_json (descriptors are not part
+// of it), checking types, `dimension` parameters, finite values and parents
+// older than the child. Throws std::invalid_argument naming `path`.
+Individual individual_from_json(const nlohmann::json& object, std::size_t dimension, const std::string& path);
 nlohmann::json ga_state_to_json(const GaState& state);
 
 // Reads and checks a state against the run's parameters: field types,

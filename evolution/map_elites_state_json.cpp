@@ -1,0 +1,144 @@
+#include "map_elites_state_json.hpp"
+
+#include "ga_state_json.hpp"
+
+#include <cmath>
+#include <set>
+#include <stdexcept>
+#include <string>
+
+namespace morphogen {
+
+using nlohmann::json;
+
+namespace {
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+    throw std::invalid_argument(path + ": " + what);
+}
+
+const json& member(const json& object, const char* key, const std::string& path) {
+    if (!object.is_object()) fail(path, "expected an object");
+    auto it = object.find(key);
+    if (it == object.end()) fail(path, std::string("missing \"") + key + "\"");
+    return *it;
+}
+
+std::uint64_t read_u64(const json& value, const std::string& path) {
+    if (!value.is_number_unsigned()) fail(path, "expected a non-negative integer");
+    return value.get<std::uint64_t>();
+}
+
+std::vector<double> read_numbers(const json& value, const std::string& path) {
+    if (!value.is_array()) fail(path, "expected an array");
+    std::vector<double> out;
+    out.reserve(value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) {
+        if (!value[i].is_number()) fail(path + "[" + std::to_string(i) + "]", "expected a number");
+        out.push_back(value[i].get<double>());
+        if (!std::isfinite(out.back())) fail(path + "[" + std::to_string(i) + "]", "not finite");
+    }
+    return out;
+}
+}  // namespace
+
+json map_elites_state_to_json(const MapElitesState& state) {
+    json archive = json::object();
+    archive["type"] = state.archive.kind() == ArchiveKind::cvt ? "cvt" : "grid";
+    if (state.archive.kind() == ArchiveKind::cvt) archive["centroids"] = state.archive.centroids();
+    json elites = json::array();
+    for (const auto& [cell, elite] : state.archive.elites()) {
+        json row = individual_to_json(elite);
+        row["cell"] = cell;
+        row["descriptors"] = elite.descriptors;
+        elites.push_back(std::move(row));
+    }
+    archive["elites"] = std::move(elites);
+    json out = json::object();
+    out["births"] = state.births;
+    out["invalid_in_generation"] = state.invalid_in_generation;
+    out["new_cells_in_generation"] = state.new_cells_in_generation;
+    out["best"] = state.best ? individual_to_json(*state.best) : json(nullptr);
+    if (state.best) out["best"]["descriptors"] = state.best->descriptors;
+    out["archive"] = std::move(archive);
+    return out;
+}
+
+MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind,
+                                          const std::vector<DescriptorRange>& ranges, std::uint64_t cells,
+                                          std::uint64_t population, std::size_t dimension) {
+    const std::string root = "map_elites";
+    const std::uint64_t births = read_u64(member(document, "births", root), root + ".births");
+    const std::uint64_t invalid =
+        read_u64(member(document, "invalid_in_generation", root), root + ".invalid_in_generation");
+    const std::uint64_t new_cells =
+        read_u64(member(document, "new_cells_in_generation", root), root + ".new_cells_in_generation");
+    if (invalid + new_cells > births % population)
+        fail(root, "more invalid births and new cells than births in the current generation");
+
+    const json& archive = member(document, "archive", root);
+    const json& type = member(archive, "type", root + ".archive");
+    const char* expected_type = kind == ArchiveKind::cvt ? "cvt" : "grid";
+    if (type != expected_type) fail(root + ".archive.type", std::string("not \"") + expected_type + "\" as the config says");
+    auto make_archive = [&]() -> Archive {
+        if (kind == ArchiveKind::grid) {
+            if (archive.contains("centroids")) fail(root + ".archive.centroids", "a grid archive has none");
+            return Archive::grid(ranges);
+        }
+        std::vector<double> centroids = read_numbers(member(archive, "centroids", root + ".archive"),
+                                                         root + ".archive.centroids");
+        if (centroids.size() != cells * ranges.size())
+                fail(root + ".archive.centroids", std::to_string(centroids.size()) + " numbers, the config's " +
+                                                      std::to_string(cells) + " cells x " +
+                                                      std::to_string(ranges.size()) + " descriptors need " +
+                                                      std::to_string(cells * ranges.size()));
+        return Archive::cvt(ranges, std::move(centroids));
+    };
+    std::optional<Archive> built;
+    try {
+        built.emplace(make_archive());
+    } catch (const std::invalid_argument& e) {
+        const std::string what = e.what();
+        if (what.rfind(root, 0) == 0) throw;
+        fail(root + ".archive", what);
+    }
+    MapElitesState state{births, std::move(*built), std::nullopt, invalid, new_cells};
+    if (archive.size() != (kind == ArchiveKind::cvt ? 3u : 2u)) fail(root + ".archive", "unexpected keys");
+
+    const json& elites = member(archive, "elites", root + ".archive");
+    if (!elites.is_array()) fail(root + ".archive.elites", "expected an array");
+    std::set<std::uint64_t> ids;
+    std::optional<std::uint64_t> previous;
+    for (std::size_t i = 0; i < elites.size(); ++i) {
+        const std::string path = root + ".archive.elites[" + std::to_string(i) + "]";
+        Individual elite = individual_from_json(elites[i], dimension, path);
+        const std::uint64_t cell = read_u64(member(elites[i], "cell", path), path + ".cell");
+        elite.descriptors = read_numbers(member(elites[i], "descriptors", path), path + ".descriptors");
+        if (elites[i].size() != 8) fail(path, "unexpected keys");
+        if (!elite.valid()) fail(path, "an elite must be valid");
+        if (elite.id >= state.births) fail(path + ".id", "not below the birth counter");
+        if (!ids.insert(elite.id).second) fail(path + ".id", "duplicate id " + std::to_string(elite.id));
+        if (previous && cell <= *previous) fail(path + ".cell", "cells are not in increasing order");
+        previous = cell;
+        try {
+            state.archive.restore(cell, std::move(elite));
+        } catch (const std::invalid_argument& e) {
+            fail(path, e.what());
+        }
+    }
+    const json& best = member(document, "best", root);
+    if (!best.is_null()) {
+        state.best = individual_from_json(best, dimension, root + ".best");
+        state.best->descriptors = read_numbers(member(best, "descriptors", root + ".best"), root + ".best.descriptors");
+        if (!state.best->valid()) fail(root + ".best", "the best individual must be valid");
+        if (state.best->id >= state.births) fail(root + ".best.id", "not below the birth counter");
+        for (const auto& [cell, elite] : state.archive.elites())
+            if (elite.fitness > state.best->fitness)
+                fail(root + ".best", "elite " + std::to_string(elite.id) + " is fitter than the best ever born");
+    } else if (state.archive.occupied() > 0) {
+        fail(root + ".best", "null though the archive holds elites");
+    }
+    if (document.size() != 5) fail(root, "unexpected keys");
+    return state;
+}
+
+}  // namespace morphogen

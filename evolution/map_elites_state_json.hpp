@@ -1,0 +1,29 @@
+#pragma once
+// MapElitesState <-> JSON for checkpoints (bit-exact, as ga_state_json.hpp):
+//   {"births": n, "invalid_in_generation": n, "new_cells_in_generation": n,
+//    "best": individual | null,
+//    "archive": {"type": "grid" | "cvt", "centroids": [...] (cvt only, row-major),
+//                "elites": [{"cell": c, "descriptors": [...], <individual>}, ...] (cell order)}}
+// The CVT centroids are stored so a resume never recomputes them.
+#include "map_elites.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <vector>
+
+namespace morphogen {
+
+nlohmann::json map_elites_state_to_json(const MapElitesState& state);
+
+// Reads and checks a state against the run's archive definition (`kind`,
+// `ranges`, `cells` for a CVT) and genome size: types, parameter counts,
+// centroids in [0,1] and as many as the config's cells, elites valid, in
+// increasing cell order, their descriptors mapping to their cell, ids unique
+// and below the birth counter, the best valid and at least as fit as every
+// elite. Throws std::invalid_argument naming the first defect ("map_elites.…").
+MapElitesState map_elites_state_from_json(const nlohmann::json& document, ArchiveKind kind,
+                                          const std::vector<DescriptorRange>& ranges, std::uint64_t cells,
+                                          std::uint64_t population, std::size_t dimension);
+
+}  // namespace morphogen
