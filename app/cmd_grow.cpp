@@ -6,6 +6,7 @@
 #include "growth.hpp"
 #include "mesh_io.hpp"
 #include "mesh_stats.hpp"
+#include "resource_options.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -23,11 +24,14 @@ struct GrowOptions {
     std::optional<int> steps;
     std::string output;
     std::string save_genome;
+    ResourceOptions resources;
 };
 
 int run_grow(const GrowOptions& options) {
     ExperimentConfig config = load_experiment_config(options.config);
     if (options.steps) config.growth.steps = *options.steps;
+    check_resource_limits(config, Workload{.scores = false, .writers = 1}, options.resources.limits(),
+                          options.config.empty() ? "default config" : options.config);
     mesh_format_from_path(options.output);  // refuse an unknown extension before growing
     const std::vector<int> layers = config.network.layers();
     const Genome genome = options.random_seed ? random_genome(layers, config.evolution.init_range, *options.random_seed)
@@ -62,6 +66,7 @@ void add_grow_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--steps", options->steps, "Override growth.steps")->check(CLI::Range(0, 1'000'000));
     cmd->add_option("-o,--output", options->output, "Output mesh (.obj .ply .off .stl .glb)")->required();
     cmd->add_option("--save-genome", options->save_genome, "Also write the genome as JSON");
+    add_resource_options(cmd, options->resources);
     cmd->callback([options, random, genome, &selected] {
         if (random->count() + genome->count() != 1)
             throw CLI::RequiredError("grow needs one of --random SEED or --genome FILE");

@@ -6,6 +6,7 @@
 #include "errors.hpp"
 #include "evolution_run.hpp"
 #include "exit_codes.hpp"
+#include "resource_options.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -19,6 +20,7 @@ struct ResumeOptions {
     std::uint64_t generations = 0;
     int threads = 0;
     CLI::Option *generations_option = nullptr, *threads_option = nullptr;
+    ResourceOptions resources;
 };
 
 // The keys that decide a run's result must be the same in config.json and the
@@ -66,6 +68,7 @@ int run_resume(const ResumeOptions& o) {
         return exit_code::ok;
     }
     // Check everything before changing anything.
+    check_resource_limits(config, evolution_workload(config), o.resources.limits(), paths.config.string());
     AppendFile::check_prefix(paths.lineage, state.lineage_bytes, state.lineage_hash);
     GrowthProblem problem(config);
 
@@ -87,6 +90,7 @@ void add_resume_command(CLI::App& root, CommandRunner& selected) {
     options->generations_option =
         cmd->add_option("--generations", options->generations, "total generations to reach (replaces run.generations)");
     options->threads_option = cmd->add_option("--threads", options->threads, "worker threads (0 = all cores)");
+    add_resource_options(cmd, options->resources);
     cmd->callback([options, &selected] { selected = [options] { return run_resume(*options); }; });
 }
 

@@ -7,6 +7,7 @@
 #include "genome_source.hpp"
 #include "growth.hpp"
 #include "mesh_io.hpp"
+#include "resource_options.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +25,7 @@ struct ScoreOptions {
     std::string config;
     std::string fitness;  // inline JSON replacing the config's fitness section
     bool json = false;
+    ResourceOptions resources;
 };
 
 ExperimentConfig score_config(const ScoreOptions& options) {
@@ -52,6 +54,9 @@ std::string number_text(const nlohmann::json& value) {
 
 int run_score(const ScoreOptions& options) {
     const ExperimentConfig config = score_config(options);
+    if (options.mesh.empty())  // a grown mesh: bounded by the config
+        check_resource_limits(config, Workload{.metrics = true}, options.resources.limits(),
+                              options.config.empty() ? "default config" : options.config);
     const MeshArrays mesh = options.mesh.empty() ? grow_genome(config, options.genome) : read_mesh(options.mesh);
     const FitnessOutcome outcome = config.fitness->evaluate(mesh.view());
     const nlohmann::json& fitness_section = config.resolved["fitness"];
@@ -94,6 +99,7 @@ void add_score_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--fitness", options->fitness,
                     "Fitness section as inline JSON, replacing the config's, e.g. '{\"type\": \"light\"}'");
     cmd->add_flag("--json", options->json, "Print one JSON object instead of text");
+    add_resource_options(cmd, options->resources);
     cmd->callback([options, mesh, genome, &selected] {
         if (mesh->count() + genome->count() != 1)
             throw CLI::RequiredError("score needs one of --mesh FILE or --genome FILE");

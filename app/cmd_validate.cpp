@@ -4,6 +4,7 @@
 #include "errors.hpp"
 #include "exit_codes.hpp"
 #include "experiment_config.hpp"
+#include "resource_options.hpp"
 #include "seeds.hpp"
 
 #include <iostream>
@@ -15,6 +16,7 @@ namespace {
 struct ValidateOptions {
     std::vector<std::string> configs;
     bool print_resolved = false;
+    ResourceOptions resources;
 };
 
 int run_validate(const ValidateOptions& o) {
@@ -22,12 +24,17 @@ int run_validate(const ValidateOptions& o) {
     for (const std::string& path : o.configs) {
         try {
             const ExperimentConfig config = load_experiment_config(path);
+            Seed seed;
             try {
-                (void)make_seed(config.growth.seed_mesh, config.growth.seed_radius);
+                seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
             } catch (const Error& e) {
                 throw ConfigError(path + ": growth.seed_mesh: " + e.what());
             }
-            std::cout << path << ": valid\n";
+            // What `evolve` would need on this machine.
+            const ResourceLimits limits = o.resources.limits();
+            const ResourceEstimate estimate =
+                check_resource_limits(config, seed, evolution_workload(config), limits, path);
+            std::cout << path << ": valid (" << resource_summary(estimate, limits) << ")\n";
             if (o.print_resolved) std::cout << config.resolved.dump(2) << '\n';
         } catch (const ConfigError& e) {
             std::cerr << e.what() << '\n';
@@ -46,6 +53,7 @@ void add_validate_command(CLI::App& root, CommandRunner& selected) {
     CLI::App* cmd = root.add_subcommand("validate", "Check experiment configs and report every problem at once");
     cmd->add_option("config", options->configs, "experiment config files (JSON)")->required();
     cmd->add_flag("--resolved", options->print_resolved, "also print each config with its defaults filled in");
+    add_resource_options(cmd, options->resources);
     cmd->callback([options, &selected] { selected = [options] { return run_validate(*options); }; });
 }
 
