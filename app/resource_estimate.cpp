@@ -265,12 +265,12 @@ Workload evolution_workload(const ExperimentConfig& config) {
     return w;
 }
 
-double search_genomes(const ExperimentConfig& config) {
+SearchGenomes search_genomes(const ExperimentConfig& config) {
     const double P = config.evolution.population;
     const double batch = std::min<double>(config.evolution.batch, P);
     // The population, its copy in the run state saved at each checkpoint, the
     // children of a batch, and the best so far (in both states and one export).
-    return 2 * P + batch + 3;
+    return {2 * P + batch + 3, P + 1};
 }
 
 ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedExtent& seed, const Workload& w) {
@@ -341,12 +341,12 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
         e.memory.push_back({group(w.kept_meshes) + " meshes of up to " + group(v) + " vertices kept for the sheet",
                             {"growth.max_vertices"}, w.kept_meshes * v * kept_mesh_bytes_per_vertex});
     if (w.evolution) {
-        e.search_genomes = search_genomes(config);
-        e.memory.push_back({group(e.search_genomes) + " genomes (population, batch, best) x " + group(D) +
+        e.genomes = search_genomes(config);
+        e.memory.push_back({group(e.genomes.held) + " genomes (population, batch, best) x " + group(D) +
                                 " parameters",
                             with(network_keys, {"evolution.population", "evolution.batch"}),
-                            e.search_genomes * (8 * D + genome_overhead)});
-        const double kept = static_cast<double>(config.evolution.population) + 1;  // population and best
+                            e.genomes.held * (8 * D + genome_overhead)});
+        const double kept = e.genomes.checkpointed;
         const double rows = static_cast<double>(config.run.generations) + 1;
         e.checkpoint_bytes = kept * (D * checkpoint_text_per_param + checkpoint_text_per_genome) +
                              rows * checkpoint_text_per_row + checkpoint_fixed;

@@ -92,9 +92,17 @@ struct HardCap {
     double needed = 0, cap = 0;
 };
 
+// The genomes of the search, the one place an archive of elites would add
+// its cells (both in memory and in the checkpoint).
+struct SearchGenomes {
+    double held = 0;          // in memory at once: population, its copy in the saved state, a batch, the best
+    double checkpointed = 0;  // in each checkpoint: population and best
+};
+SearchGenomes search_genomes(const ExperimentConfig& config);
+
 struct ResourceEstimate {
     std::uint64_t parameters = 0;   // genome size
-    double search_genomes = 0;      // genomes held by the search at once
+    SearchGenomes genomes;          // of the search (evolution only)
     double checkpoint_bytes = 0;    // the largest checkpoint.json of the run (evolution only)
     double max_vertices = 0;        // the most vertices a plant can have
     double vertex_steps = 0;        // vertices thinking, summed over the steps
@@ -106,11 +114,6 @@ struct ResourceEstimate {
     double memory_bytes() const;
     double eval_seconds() const;
 };
-
-// Genomes the search holds at once: population, its copy in the checkpoint
-// state, the batch being evaluated, the best so far. The one place an archive
-// of elites would add its cells.
-double search_genomes(const ExperimentConfig& config);
 
 ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedExtent& seed, const Workload& workload);
 

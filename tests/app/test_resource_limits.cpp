@@ -91,8 +91,9 @@ TEST_CASE("the estimate counts the genome's parameters as the network does", "[l
     // [12, 5, 6, 4]: 5 * 13 + 6 * 6 + 4 * 7.
     CHECK(e.parameters == 65 + 36 + 28);
     CHECK(e.parameters == random_genome(config.network.layers(), 1.0, 3).params.size());
-    CHECK(e.search_genomes == search_genomes(config));
-    CHECK(e.search_genomes == 2 * 100 + 32 + 3);
+    CHECK(e.genomes.held == search_genomes(config).held);
+    CHECK(e.genomes.held == 2 * 100 + 32 + 3);
+    CHECK(e.genomes.checkpointed == 100 + 1);
 }
 
 TEST_CASE("vertex and reach bounds hold for real growths, and are reached by the fastest", "[limits]") {
