@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
-#include <set>
 
 namespace morphogen {
 
@@ -183,7 +182,7 @@ void add_fitness(FitnessCost& cost, const json& section, const std::string& path
     }
 }
 
-std::vector<std::string> network_keys{"network.outputs", "network.hidden"};
+const std::vector<std::string> network_keys{"network.outputs", "network.hidden"};
 
 }  // namespace
 
