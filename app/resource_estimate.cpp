@@ -182,7 +182,7 @@ void add_fitness(FitnessCost& cost, const json& section, const std::string& path
     }
 }
 
-const std::vector<std::string> network_keys{"network.outputs", "network.hidden"};
+const std::vector<std::string> network_keys{"network.hidden", "network.outputs"};
 
 }  // namespace
 
@@ -298,9 +298,11 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
 
     // Work of one evaluation.
     const double per_vertex_step = D * second_per_mac + N * second_per_output + second_per_vertex_step;
+    const std::vector<std::string> growth_keys{"growth.max_vertices", "growth.split_area", "growth.steps"};
     e.work.push_back({"growth: up to " + group(e.vertex_steps) + " vertex-steps (" + std::to_string(g.steps) +
                           " steps, up to " + group(v) + " vertices) x " + group(D) + " network parameters",
-                      with({"growth.steps", "growth.max_vertices", "growth.split_area"}, network_keys),
+                      D * second_per_mac > second_per_vertex_step ? with(network_keys, growth_keys)
+                                                                  : with(growth_keys, network_keys),
                       D * second_per_param_build + e.vertex_steps * per_vertex_step +
                           (v - seed.vertices) * second_per_split});
     FitnessCost fitness;
@@ -340,10 +342,17 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
         e.memory.push_back({group(w.kept_meshes) + " meshes of up to " + group(v) + " vertices kept for the sheet",
                             {"growth.max_vertices"}, w.kept_meshes * v * kept_mesh_bytes_per_vertex});
     if (w.evolution) {
+        // Genome memory is population x parameters: name first whichever is
+        // further above its default.
+        const double default_parameters = static_cast<double>(parameter_count(NetworkParams{}.layers()));
+        const bool population_first = config.evolution.population / double(GaParams{}.population) >= D / default_parameters;
+        const auto genome_keys = [&](const std::vector<std::string>& search_keys) {
+            return population_first ? with(search_keys, network_keys) : with(network_keys, search_keys);
+        };
         e.genomes = search_genomes(config);
         e.memory.push_back({group(e.genomes.held) + " genomes (population, batch, best) x " + group(D) +
                                 " parameters",
-                            with(network_keys, {"evolution.population", "evolution.batch"}),
+                            genome_keys({"evolution.population", "evolution.batch"}),
                             e.genomes.held * (8 * D + genome_overhead)});
         const double kept = e.genomes.checkpointed;
         const double rows = static_cast<double>(config.run.generations) + 1;
@@ -353,7 +362,7 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
                             rows * checkpoint_tree_per_row + checkpoint_fixed;
         e.memory.push_back({"writing or reading a checkpoint of up to " + format_bytes(e.checkpoint_bytes) + " (" +
                                 group(kept) + " genomes, " + group(rows) + " history rows)",
-                            with(network_keys, {"evolution.population", "run.generations"}),
+                            genome_keys({"evolution.population", "run.generations"}),
                             checkpoint_texts_alive * e.checkpoint_bytes + checkpoint_trees_alive * tree +
                                 rows * history_row_bytes});
     }
