@@ -5,6 +5,7 @@
 #include "evolution_run.hpp"
 #include "exit_codes.hpp"
 #include "stop_signals.hpp"
+#include "resource_options.hpp"
 
 #include <chrono>
 #include <iostream>
@@ -19,6 +20,7 @@ struct EvolveOptions {
     int threads = 0;
     bool force = false;
     CLI::Option *seed_option = nullptr, *generations_option = nullptr, *threads_option = nullptr;
+    ResourceOptions resources;
 };
 
 int run_evolve(const EvolveOptions& o) {
@@ -28,6 +30,7 @@ int run_evolve(const EvolveOptions& o) {
     if (*o.generations_option) overrides.generations = o.generations;
     if (*o.threads_option) overrides.threads = o.threads;
     ExperimentConfig config = load_experiment_config(o.config, overrides);  // every problem, before anything else
+    check_resource_limits(config, evolution_workload(config), o.resources.limits(), o.config);
     GrowthProblem problem(config);  // a bad seed mesh file fails here, before the directory exists
 
     const RunPaths paths =
@@ -74,6 +77,7 @@ void add_evolve_command(CLI::App& root, CommandRunner& selected) {
     options->generations_option = cmd->add_option("--generations", options->generations, "replaces run.generations");
     options->threads_option = cmd->add_option("--threads", options->threads, "replaces run.threads (0 = all cores)");
     cmd->add_flag("--force", options->force, "reuse a non-empty run directory (removes its morphogen files)");
+    add_resource_options(cmd, options->resources);
     cmd->callback([options, &selected] { selected = [options] { return run_evolve(*options); }; });
 }
 

@@ -7,6 +7,7 @@
 #include "mesh_io.hpp"
 #include "mesh_stats.hpp"
 #include "render.hpp"
+#include "resource_options.hpp"
 
 #include <omp.h>
 
@@ -30,6 +31,7 @@ struct GalleryOptions {
     int threads = 0;
     int columns = 10;
     MeshWriteOptions mesh_options;
+    ResourceOptions resources;
 };
 
 struct GalleryEntry {
@@ -51,6 +53,11 @@ int run_gallery(const GalleryOptions& options) {
     const ExperimentConfig config = load_experiment_config(options.config);
     const std::vector<int> layers = config.network.layers();
     const Seed seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
+    const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+    check_resource_limits(config, seed,
+                          Workload{.threads = threads, .writers = options.format != "none" ? double(threads) : 0.0,
+                                   .kept_meshes = double(options.count)},
+                          options.resources.limits(), options.config.empty() ? "default config" : options.config);
     const std::filesystem::path dir(options.out);
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -144,6 +151,7 @@ void add_gallery_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--png", options->png, "Also render a contact sheet of all entries to this PNG");
     cmd->add_option("--columns", options->columns, "Columns of the contact sheet")->check(CLI::Range(1, 100));
     cmd->add_option("--threads", options->threads, "Threads (0 = all cores)")->check(CLI::Range(0, 4096));
+    add_resource_options(cmd, options->resources);
     cmd->callback([options, &selected] { selected = [options] { return run_gallery(*options); }; });
 }
 

@@ -6,6 +6,7 @@
 #include "growth.hpp"
 #include "mesh_io.hpp"
 #include "mesh_stats.hpp"
+#include "resource_options.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -24,11 +25,14 @@ struct GrowOptions {
     std::string output;
     std::string save_genome;
     MeshWriteOptions mesh_options;
+    ResourceOptions resources;
 };
 
 int run_grow(const GrowOptions& options) {
     ExperimentConfig config = load_experiment_config(options.config);
     if (options.steps) config.growth.steps = *options.steps;
+    check_resource_limits(config, Workload{.scores = false, .writers = 1}, options.resources.limits(),
+                          options.config.empty() ? "default config" : options.config);
     mesh_format_from_path(options.output);  // refuse an unknown extension before growing
     const std::vector<int> layers = config.network.layers();
     const Genome genome = options.random_seed ? random_genome(layers, config.evolution.init_range, *options.random_seed)
@@ -65,6 +69,7 @@ void add_grow_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--save-genome", options->save_genome, "Also write the genome as JSON");
     cmd->add_flag("--ply-double", options->mesh_options.ply_double,
                   "PLY output: 64-bit coordinates and normals (exact) instead of float32 (what WebGL viewers draw)");
+    add_resource_options(cmd, options->resources);
     cmd->callback([options, random, genome, &selected] {
         if (random->count() + genome->count() != 1)
             throw CLI::RequiredError("grow needs one of --random SEED or --genome FILE");

@@ -8,6 +8,7 @@
 #include "evolution_run.hpp"
 #include "exit_codes.hpp"
 #include "stop_signals.hpp"
+#include "resource_options.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -22,6 +23,7 @@ struct ResumeOptions {
     std::uint64_t generations = 0;
     int threads = 0;
     CLI::Option *generations_option = nullptr, *threads_option = nullptr;
+    ResourceOptions resources;
 };
 
 // The keys that decide a run's result must be the same in config.json and the
@@ -81,6 +83,8 @@ int run_resume(const ResumeOptions& o) {
                   << " already reached; nothing to do (pass --generations to go further)\n";
         return exit_code::ok;
     }
+    // Check everything before changing anything.
+    check_resource_limits(config, evolution_workload(config), o.resources.limits(), paths.config.string());
     GrowthProblem problem(config);
     RunLoggers log = make_run_loggers(paths);
     if (StopSignals::requested()) {
@@ -109,6 +113,7 @@ void add_resume_command(CLI::App& root, CommandRunner& selected) {
     options->generations_option =
         cmd->add_option("--generations", options->generations, "total generations to reach (replaces run.generations)");
     options->threads_option = cmd->add_option("--threads", options->threads, "worker threads (0 = all cores)");
+    add_resource_options(cmd, options->resources);
     cmd->callback([options, &selected] { selected = [options] { return run_resume(*options); }; });
 }
 

@@ -8,6 +8,7 @@
 #include "genome_source.hpp"
 #include "growth.hpp"
 #include "mesh_io.hpp"
+#include "resource_options.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -26,6 +27,7 @@ struct ScoreOptions {
     std::string config;
     std::string fitness;  // inline JSON replacing the config's fitness section
     bool json = false;
+    ResourceOptions resources;
 };
 
 ExperimentConfig score_config(const ScoreOptions& options) {
@@ -62,6 +64,9 @@ void require_scorable(const MeshArrays& mesh, const std::string& source) {
 int run_score(const ScoreOptions& options) {
     const ExperimentConfig config = score_config(options);
     const std::string source = options.mesh.empty() ? options.genome + " (grown)" : options.mesh;
+    if (options.mesh.empty())  // a grown mesh: bounded by the config
+        check_resource_limits(config, Workload{.metrics = true}, options.resources.limits(),
+                              options.config.empty() ? "default config" : options.config);
     const MeshArrays mesh = options.mesh.empty() ? grow_genome(config, options.genome) : read_mesh(options.mesh);
     require_scorable(mesh, source);
     const FitnessOutcome outcome = config.fitness->evaluate(mesh.view());
@@ -110,6 +115,7 @@ void add_score_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--fitness", options->fitness,
                     "Fitness section as inline JSON, replacing the config's, e.g. '{\"type\": \"light\"}'");
     cmd->add_flag("--json", options->json, "Print one JSON object instead of text");
+    add_resource_options(cmd, options->resources);
     cmd->callback([options, mesh, genome, &selected] {
         if (mesh->count() + genome->count() != 1)
             throw CLI::RequiredError("score needs one of --mesh FILE or --genome FILE");

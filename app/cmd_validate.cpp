@@ -6,6 +6,7 @@
 #include "errors.hpp"
 #include "exit_codes.hpp"
 #include "experiment_config.hpp"
+#include "resource_options.hpp"
 #include "seeds.hpp"
 
 #include <iostream>
@@ -17,6 +18,7 @@ namespace {
 struct ValidateOptions {
     std::vector<std::string> configs;
     bool print_resolved = false;
+    ResourceOptions resources;
 };
 
 int run_validate(const ValidateOptions& o) {
@@ -26,14 +28,19 @@ int run_validate(const ValidateOptions& o) {
             const ExperimentConfig config = load_experiment_config(path);
             // The same exceptions (and exit codes) as evolve and grow give: a seed
             // file that cannot be read is 3, one that is not a usable mesh 4.
+            Seed seed;
             try {
-                (void)make_seed(config.growth.seed_mesh, config.growth.seed_radius);
+                seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
             } catch (const IoError& e) {
                 throw IoError(path + ": " + e.what());
             } catch (const MeshError& e) {
                 throw MeshError(path + ": growth.seed_mesh: " + e.what());
             }
-            std::cout << path << ": valid\n";
+            // What `evolve` would need on this machine.
+            const ResourceLimits limits = o.resources.limits();
+            const ResourceEstimate estimate =
+                check_resource_limits(config, seed, evolution_workload(config), limits, path);
+            std::cout << path << ": valid (" << resource_summary(estimate, limits) << ")\n";
             if (o.print_resolved) std::cout << config.resolved.dump(2) << '\n';
         } catch (const ConfigError& e) {
             std::cerr << e.what() << '\n';
@@ -55,6 +62,7 @@ void add_validate_command(CLI::App& root, CommandRunner& selected) {
     CLI::App* cmd = root.add_subcommand("validate", "Check experiment configs and report every problem at once");
     cmd->add_option("config", options->configs, "experiment config files (JSON)")->required();
     cmd->add_flag("--resolved", options->print_resolved, "also print each config with its defaults filled in");
+    add_resource_options(cmd, options->resources);
     cmd->callback([options, &selected] { selected = [options] { return run_validate(*options); }; });
 }
 

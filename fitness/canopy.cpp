@@ -22,7 +22,7 @@ namespace {
 
 constexpr double kEpsilon = 1.1102230246251565e-16;  // 2^-53, half an ulp of 1
 constexpr double kOrientBound = (3.0 + 16.0 * kEpsilon) * kEpsilon;
-constexpr std::int64_t kMaxCells = std::int64_t{1} << 28;
+constexpr std::int64_t kMaxCells = canopy_max_cells;
 constexpr double kMaxIndex = 1e12;  // |coordinate / cell| beyond this: refuse
 
 struct Orientation {

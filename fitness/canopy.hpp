@@ -25,6 +25,11 @@ inline double cell_centre(std::int64_t i, double cell) { return (static_cast<dou
 
 using CellIndex = std::pair<std::int64_t, std::int64_t>;  // (i, j)
 
+// The most grid cells one evaluation rasterises (one byte each). A config
+// whose plants could need more is refused before a run
+// (app/resource_estimate.hpp), unless limits are lifted.
+inline constexpr std::int64_t canopy_max_cells = std::int64_t{1} << 28;
+
 // The score, by z-buffer rasterisation: only triangles whose highest vertex is
 // above `height`, and only the cell centres in each one's bounding box, are
 // tested. Since H > height iff some covering triangle is above height there,

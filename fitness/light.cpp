@@ -13,7 +13,7 @@
 namespace morphogen {
 
 namespace {
-constexpr double kMaxRays = double(1 << 26);
+constexpr double kMaxRays = light_max_rays_per_sun;
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 

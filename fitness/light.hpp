@@ -22,10 +22,15 @@ struct LightParams {
     double min_height = 0.0;  // hits below this z capture nothing
 };
 
+// The most rays one sun casts in one evaluation. A config whose plants could
+// need more is refused before a run (app/resource_estimate.hpp), unless
+// limits are lifted.
+inline constexpr double light_max_rays_per_sun = double(1 << 26);
+
 // Unit vectors pointing towards each sun, in the order elevation-major.
 std::vector<Vec3> sun_directions(const LightParams& params);
 
-// Light from one sun; throws std::length_error beyond 2^26 rays.
+// Light from one sun; throws std::length_error beyond light_max_rays_per_sun rays.
 double light_from(MeshView mesh, const Vec3& to_sun, double spacing, double min_height);
 
 // Mean of light_from over sun_directions(params). Thread-safe.
