@@ -1,7 +1,6 @@
 #include "experiment_config.hpp"
 
 #include "config_reader.hpp"
-#include "network.hpp"
 
 #include <filesystem>
 
@@ -109,7 +108,7 @@ ExperimentConfig read_experiment_config(const json& original, const std::string&
     config.evolution = read_section(top, "evolution", issues,
                                     [&](ObjectReader& r) { return read_evolution_params(r, &config.algorithm); });
     config.run = read_section(top, "run", issues, read_run_params);
-    config.qd = read_qd_params(top, config.algorithm, parameter_count(config.network.layers()));
+    config.qd = read_qd_params(top, config.algorithm);
 
     top.finish();
     issues.throw_if_any(source);

@@ -3,8 +3,6 @@
 #include "cvt.hpp"
 #include "descriptors.hpp"
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
@@ -14,21 +12,6 @@ namespace morphogen {
 using nlohmann::json;
 
 namespace {
-
-// Half the physical memory (16 GiB if it cannot be read), as the resource
-// limits of evolve use by default.
-double archive_memory_limit() {
-    const long pages = sysconf(_SC_PHYS_PAGES);
-    const long page = sysconf(_SC_PAGE_SIZE);
-    if (pages <= 0 || page <= 0) return 16.0 * (1ULL << 30);
-    return 0.5 * static_cast<double>(pages) * static_cast<double>(page);
-}
-
-std::string gib(double bytes) {
-    char text[64];
-    std::snprintf(text, sizeof text, "%.1f GiB", bytes / static_cast<double>(1ULL << 30));
-    return text;
-}
 
 // One entry of `descriptors`; a bad measure, range or bin count is an issue.
 DescriptorRange read_descriptor(const json& item, const std::string& path, ConfigIssues& issues, json& resolved) {
@@ -83,7 +66,7 @@ const char* algorithm_name(Algorithm algorithm) {
     return algorithm == Algorithm::map_elites ? "map_elites" : "steady_state";
 }
 
-QdParams read_qd_params(ObjectReader& top, Algorithm algorithm, std::size_t dimension) {
+QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
     ConfigIssues& issues = top.issues();
     QdParams qd;
     const json* descriptors = top.raw("descriptors");
@@ -148,13 +131,6 @@ QdParams read_qd_params(ObjectReader& top, Algorithm algorithm, std::size_t dime
             return qd;
         }
     }
-    const double bytes = archive_genome_bytes(qd.cells(), dimension);
-    const double limit = archive_memory_limit();
-    if (bytes > limit)
-        issues.add(qd.archive == ArchiveKind::grid ? "descriptors" : "archive.cells",
-                   "a full archive needs " + gib(bytes) + " for its genomes (" + std::to_string(qd.cells()) +
-                       " cells x " + std::to_string(dimension) + " parameters x 8 bytes), more than " + gib(limit) +
-                       " (half this machine's memory): use fewer bins or cells, or a smaller network");
     return qd;
 }
 

@@ -32,10 +32,9 @@ struct QdParams {
 // with no or more than 3 descriptors or more than kMaxGridCells cells, a CVT
 // with more than kMaxCvtCells cells, and either key given for a steady-state
 // run (it would be ignored). Records both in the resolved config only for
-// map_elites. `dimension` is the genome size, for the memory check: the full
-// archive's genomes (cells x dimension x 8 bytes) must fit in half the
-// machine's physical memory.
-QdParams read_qd_params(ObjectReader& top, Algorithm algorithm, std::size_t dimension);
+// map_elites. Whether a full archive fits in memory is resource_estimate's
+// part (search_genomes counts its cells), with the other limits.
+QdParams read_qd_params(ObjectReader& top, Algorithm algorithm);
 
 // "steady_state" | "map_elites".
 const char* algorithm_name(Algorithm algorithm);

@@ -267,6 +267,12 @@ Workload evolution_workload(const ExperimentConfig& config) {
 SearchGenomes search_genomes(const ExperimentConfig& config) {
     const double P = config.evolution.population;
     const double batch = std::min<double>(config.evolution.batch, P);
+    if (config.algorithm == Algorithm::map_elites) {
+        // Every cell full (generation 0's P births enter the archive too), its
+        // copy in the run state saved at each checkpoint, a batch, the best.
+        const double cells = static_cast<double>(config.qd.cells());
+        return {2 * cells + batch + 3, cells + 1};
+    }
     // The population, its copy in the run state saved at each checkpoint, the
     // children of a batch, and the best so far (in both states and one export).
     return {2 * P + batch + 3, P + 1};
@@ -345,14 +351,21 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
         // Genome memory is population x parameters: name first whichever is
         // further above its default.
         const double default_parameters = static_cast<double>(parameter_count(NetworkParams{}.layers()));
-        const bool population_first = config.evolution.population / double(GaParams{}.population) >= D / default_parameters;
+        const bool elites = config.algorithm == Algorithm::map_elites;
+        const double genomes = elites ? static_cast<double>(config.qd.cells()) : config.evolution.population;
+        const bool population_first = genomes / double(GaParams{}.population) >= D / default_parameters;
         const auto genome_keys = [&](const std::vector<std::string>& search_keys) {
             return population_first ? with(search_keys, network_keys) : with(network_keys, search_keys);
         };
+        // A MAP-Elites archive's size is set by its cells: the bins of a grid, archive.cells of a CVT.
+        const std::string cells_key = config.qd.archive == ArchiveKind::cvt ? "archive.cells" : "descriptors";
         e.genomes = search_genomes(config);
-        e.memory.push_back({group(e.genomes.held) + " genomes (population, batch, best) x " + group(D) +
-                                " parameters",
-                            genome_keys({"evolution.population", "evolution.batch"}),
+        e.memory.push_back({group(e.genomes.held) +
+                                (elites ? " genomes (a full archive of " + group(genomes) + " cells twice, batch, best) x "
+                                        : std::string(" genomes (population, batch, best) x ")) +
+                                group(D) + " parameters",
+                            genome_keys(elites ? std::vector<std::string>{cells_key, "evolution.batch"}
+                                               : std::vector<std::string>{"evolution.population", "evolution.batch"}),
                             e.genomes.held * (8 * D + genome_overhead)});
         const double kept = e.genomes.checkpointed;
         const double rows = static_cast<double>(config.run.generations) + 1;
@@ -362,7 +375,8 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
                             rows * checkpoint_tree_per_row + checkpoint_fixed;
         e.memory.push_back({"writing or reading a checkpoint of up to " + format_bytes(e.checkpoint_bytes) + " (" +
                                 group(kept) + " genomes, " + group(rows) + " history rows)",
-                            genome_keys({"evolution.population", "run.generations"}),
+                            genome_keys(elites ? std::vector<std::string>{cells_key, "run.generations"}
+                                               : std::vector<std::string>{"evolution.population", "run.generations"}),
                             checkpoint_texts_alive * e.checkpoint_bytes + checkpoint_trees_alive * tree +
                                 rows * history_row_bytes});
     }

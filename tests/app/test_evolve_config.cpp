@@ -6,6 +6,7 @@
 #include "errors.hpp"
 #include "descriptors.hpp"
 #include "experiment_config.hpp"
+#include "resource_estimate.hpp"
 
 #include <catch2/catch.hpp>
 #include <valijson/adapters/nlohmann_json_adapter.hpp>
@@ -365,10 +366,22 @@ TEST_CASE("bad descriptor configs are refused all at once with their key paths",
     CHECK_THAT(config_errors(me(R"(, "descriptors": [{"measure": "height", "min": 0, "max": 1, "bins": 1000000},
         {"measure": "area", "min": 0, "max": 1, "bins": 1000000}, {"measure": "width", "min": 0, "max": 1, "bins": 2}])")),
                Catch::Contains("descriptors: the grid has 2000000000000.0 cells"));
-    const std::string memory = config_errors(me(R"(, "network": {"outputs": 15, "hidden": [30]},
-        "descriptors": [{"measure": "height", "min": 0, "max": 1, "bins": 1000000},
-                        {"measure": "area", "min": 0, "max": 1, "bins": 100000}])"));
-    CHECK_THAT(memory, Catch::Contains("descriptors: a full archive needs"));
-    CHECK_THAT(memory, Catch::Contains("(100000000000 cells x "));
-    CHECK_THAT(memory, Catch::Contains("parameters x 8 bytes), more than"));
+    // a full archive beyond memory: the resource limits (search_genomes counts the cells)
+    const ExperimentConfig big = read_experiment_config(me(R"(, "network": {"outputs": 15, "hidden": [30]},
+        "descriptors": [{"measure": "height", "min": 0, "max": 1, "bins": 1000},
+                        {"measure": "area", "min": 0, "max": 1, "bins": 1000}])"), "big.json");
+    CHECK(search_genomes(big).checkpointed == 1'000'001.0);
+    ResourceLimits limits;
+    limits.max_memory_bytes = 64.0 * (1ULL << 30);
+    std::string memory;
+    try {
+        check_resource_limits(big, evolution_workload(big), limits, "big.json");
+    } catch (const ConfigError& e) {
+        memory = e.what();
+    }
+    CHECK_THAT(memory, Catch::Contains("big.json: descriptors, "));
+    CHECK_THAT(memory, Catch::Contains("genomes (a full archive of 1,000,000 cells twice, batch, best) x "));
+    // the same archive in a GA-sized grid fits
+    const ExperimentConfig small = read_experiment_config(me(R"(, "descriptors": [{"measure": "height", "min": 0, "max": 1, "bins": 20}])"), "s");
+    CHECK_NOTHROW(check_resource_limits(small, evolution_workload(small), limits, "s.json"));
 }
