@@ -6,6 +6,7 @@
 #include "experiment_config.hpp"
 #include "fnv_hash.hpp"
 #include "ga_state_json.hpp"
+#include "map_elites_state_json.hpp"
 #include "json_text.hpp"
 #include "network.hpp"
 
@@ -19,12 +20,16 @@ constexpr const char* format_name = "morphogen-checkpoint";
 json content_of(const RunState& s) {
     json history = json::array();
     for (const HistoryRow& row : s.history) history.push_back(history_row_to_json(row));
-    return json{{"config", s.config},
-                {"seed", s.seed},
-                {"ga", ga_state_to_json(s.ga)},
-                {"history", std::move(history)},
-                {"lineage", {{"bytes", s.lineage_bytes}, {"hash", s.lineage_hash}}},
-                {"elapsed_s", s.elapsed_s}};
+    json content{{"config", s.config},
+                 {"seed", s.seed},
+                 {"history", std::move(history)},
+                 {"lineage", {{"bytes", s.lineage_bytes}, {"hash", s.lineage_hash}}},
+                 {"elapsed_s", s.elapsed_s}};
+    if (s.elites)
+        content["map_elites"] = map_elites_state_to_json(*s.elites);
+    else
+        content["ga"] = ga_state_to_json(s.ga);
+    return content;
 }
 }  // namespace
 
@@ -94,12 +99,22 @@ RunState load_checkpoint(const std::filesystem::path& path) {
         if (config.resolved != state.config) throw refuse("its config is not a resolved config");
         if (config.run.seed != state.seed) throw refuse("its seed differs from its config's run.seed");
         const std::size_t dimension = parameter_count(config.network.layers());
-        state.ga = ga_state_from_json(content.at("ga"), config.evolution, dimension);
-        for (const json& row : content.at("history")) state.history.push_back(history_row_from_json(row));
         const auto P = static_cast<std::uint64_t>(config.evolution.population);
-        if (state.history.size() != state.ga.births / P)
+        if (content.size() != 6) throw refuse("unexpected keys in its content");
+        if (config.algorithm == Algorithm::map_elites) {
+            if (!content.contains("map_elites")) throw refuse("its config is a map_elites run but it holds no map_elites state");
+            state.elites = map_elites_state_from_json(content.at("map_elites"), config.qd.archive, config.qd.descriptors,
+                                                      config.qd.cells(), P, dimension);
+        } else {
+            state.ga = ga_state_from_json(content.at("ga"), config.evolution, dimension);
+        }
+        for (const json& row : content.at("history")) state.history.push_back(history_row_from_json(row));
+        if (state.history.size() != state.births() / P)
             throw refuse(std::to_string(state.history.size()) + " history rows for " +
-                         std::to_string(state.ga.births) + " births");
+                         std::to_string(state.births()) + " births");
+        for (const HistoryRow& row : state.history)
+            if (row.qd != (config.algorithm == Algorithm::map_elites))
+                throw refuse("its history rows do not fit its algorithm");
         for (std::size_t g = 0; g < state.history.size(); ++g)
             if (state.history[g].generation != g) throw refuse("history rows out of order");
         state.lineage_bytes = content.at("lineage").at("bytes").get<std::uint64_t>();

@@ -9,16 +9,21 @@
 // single changed byte is refused. Writes are atomic (atomic_file.hpp).
 //
 // `content` holds the resolved config, the GA state (seed, birth counter,
-// population with ids, parents, genomes and fitness, best so far), every
+// population with ids, parents, genomes and fitness, best so far) or, for a
+// MAP-Elites run, its state (map_elites_state_json.hpp: the archive's elites
+// with genomes, descriptors, fitness, ids and parents, the CVT centroids, the
+// best ever, the generation counters), every
 // history row so far, the length and hash of lineage.csv at checkpoint time,
 // and the elapsed run time.
 #include "run_records.hpp"
+#include "map_elites.hpp"
 #include "steady_state.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,11 +34,14 @@ inline constexpr int checkpoint_version = 1;
 struct RunState {
     nlohmann::json config;  // the resolved config
     std::uint64_t seed = 0; // == config.run.seed; stored on its own for readers
-    GaState ga;
+    GaState ga;                          // steady_state runs ("ga" in the content)
+    std::optional<MapElitesState> elites; // map_elites runs ("map_elites" in the content, instead of "ga")
     std::vector<HistoryRow> history;
     std::uint64_t lineage_bytes = 0;  // lineage.csv length at checkpoint time
     std::string lineage_hash;         // FNV-1a 64 (hex) of those bytes
     double elapsed_s = 0.0;           // run time so far, over all sessions
+
+    std::uint64_t births() const { return elites ? elites->births : ga.births; }
 };
 
 // Atomically writes the checkpoint. Throws IoError.

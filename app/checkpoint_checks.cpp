@@ -28,7 +28,38 @@ bool same(const Individual& a, const Individual& b) {
            (a.fitness == b.fitness || (!a.valid() && !b.valid())) && a.size == b.size;
 }
 
+// What the checks need of either algorithm's state.
+struct SearchView {
+    std::string name;  // "ga" | "map_elites"
+    std::uint64_t births = 0;
+    const std::optional<Individual>* best = nullptr;
+    std::vector<const Individual*> members;  // the population, or the archive's elites in cell order
+    std::string members_name;                // "ga.population" | "map_elites.archive.elites"
+    std::uint64_t invalid_in_generation = 0;
+};
+
+SearchView view_of(const RunState& s) {
+    SearchView v;
+    if (s.elites) {
+        v.name = "map_elites";
+        v.births = s.elites->births;
+        v.best = &s.elites->best;
+        for (const auto& [cell, elite] : s.elites->archive.elites()) v.members.push_back(&elite);
+        v.members_name = "map_elites.archive.elites";
+        v.invalid_in_generation = s.elites->invalid_in_generation;
+    } else {
+        v.name = "ga";
+        v.births = s.ga.births;
+        v.best = &s.ga.best;
+        for (const Individual& m : s.ga.population) v.members.push_back(&m);
+        v.members_name = "ga.population";
+        v.invalid_in_generation = s.ga.invalid_in_generation;
+    }
+    return v;
+}
+
 void check_history(const RunState& s, std::uint64_t P) {
+    const SearchView v = view_of(s);
     double previous_elapsed = 0.0;
     for (std::size_t g = 0; g < s.history.size(); ++g) {
         const HistoryRow& row = s.history[g];
@@ -46,8 +77,8 @@ void check_history(const RunState& s, std::uint64_t P) {
             if (!(*row.worst <= *row.median && *row.median <= *row.best))
                 contradiction(where + ": worst, median and best are not in order");
             if (!(*row.mean_vertices >= 0)) contradiction(where + ".mean_vertices is negative");
-            if (!s.ga.best || *row.best > s.ga.best->fitness)
-                contradiction(where + ".best is better than the best individual ever born (ga.best)");
+            if (!*v.best || *row.best > (*v.best)->fitness)
+                contradiction(where + ".best is better than the best individual ever born (" + v.name + ".best)");
         }
         if (!std::isfinite(row.births_per_s) || row.births_per_s < 0)
             contradiction(where + ".births_per_s is " + format_number(row.births_per_s) + ", not a rate >= 0");
@@ -76,7 +107,7 @@ std::uint64_t parse_u64(std::string_view cell, const std::string& where) {
     return value;
 }
 
-std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t births) {
+std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t births, const std::string& name) {
     const std::string_view header = lineage_header;
     if (lineage.substr(0, header.size()) != header) contradiction("lineage.csv does not start with its header");
     std::vector<LineageRow> rows;
@@ -103,7 +134,7 @@ std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t bi
         pos = end + 1;
     }
     if (rows.size() != births)
-        contradiction("ga.births is " + std::to_string(births) + " but lineage.csv records " +
+        contradiction(name + ".births is " + std::to_string(births) + " but lineage.csv records " +
                       std::to_string(rows.size()) + " births");
     return rows;
 }
@@ -122,11 +153,12 @@ std::uint64_t invalid_between(const std::vector<LineageRow>& rows, std::uint64_t
 
 void check_checkpoint_content(const RunState& s, const ExperimentConfig& config) {
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
-    const std::uint64_t births = s.ga.births;
+    const SearchView v = view_of(s);
+    const std::uint64_t births = v.births;
     if (!std::isfinite(s.elapsed_s) || s.elapsed_s < 0)
         contradiction("elapsed_s is " + format_number(s.elapsed_s) + ", not a duration >= 0");
     if (births > (config.run.generations + 1) * P)
-        contradiction("ga.births is " + std::to_string(births) + ", beyond the " +
+        contradiction(v.name + ".births is " + std::to_string(births) + ", beyond the " +
                       std::to_string((config.run.generations + 1) * P) + " births of its run.generations " +
                       std::to_string(config.run.generations));
     if (s.lineage_bytes < std::string_view(lineage_header).size())
@@ -134,38 +166,45 @@ void check_checkpoint_content(const RunState& s, const ExperimentConfig& config)
     if (s.lineage_hash.size() != 16 || s.lineage_hash.find_first_not_of("0123456789abcdef") != std::string::npos)
         contradiction("lineage.hash is not 16 lower-case hex digits");
 
-    if (s.ga.best) check_size(*s.ga.best, "ga.best");
+    const std::optional<Individual>& best = *v.best;
+    if (best) check_size(*best, v.name + ".best");
     bool any_valid = false;
-    for (std::size_t i = 0; i < s.ga.population.size(); ++i) {
-        const Individual& member = s.ga.population[i];
-        const std::string where = at("ga.population", i);
+    for (std::size_t i = 0; i < v.members.size(); ++i) {
+        const Individual& member = *v.members[i];
+        const std::string where = at(v.members_name.c_str(), i);
         check_size(member, where);
-        if (births <= P && (member.id != i || member.parent1))
+        if (!s.elites && births <= P && (member.id != i || member.parent1))
             contradiction(where + ": in generation 0 slot " + std::to_string(i) + " holds birth " +
                           std::to_string(i) + ", which has no parents");
         any_valid = any_valid || member.valid();
-        if (s.ga.best && member.valid() && member.fitness > s.ga.best->fitness)
-            contradiction(where + " (id " + std::to_string(member.id) + ") is better than ga.best");
-        if (s.ga.best && member.id == s.ga.best->id && !same(member, *s.ga.best))
-            contradiction(where + " has ga.best's id " + std::to_string(member.id) + " but differs from it");
+        if (best && member.valid() && member.fitness > best->fitness)
+            contradiction(where + " (id " + std::to_string(member.id) + ") is better than " + v.name + ".best");
+        if (best && member.id == best->id && !(same(member, *best) && member.descriptors == best->descriptors))
+            contradiction(where + " has " + v.name + ".best's id " + std::to_string(member.id) + " but differs from it");
     }
-    if (any_valid && !s.ga.best) contradiction("ga.best is null though the population has valid members");
+    if (any_valid && !best) contradiction(v.name + ".best is null though the population has valid members");
+    if (s.elites)
+        for (const HistoryRow& row : s.history)
+            if (row.new_cells > P || row.coverage > 1.0)
+                contradiction("history: new_cells or coverage out of range in generation " + std::to_string(row.generation));
     check_history(s, P);
 }
 
 void check_checkpoint_against_lineage(const RunState& s, std::string_view lineage, std::uint64_t P) {
-    const std::vector<LineageRow> rows = parse_lineage(lineage, s.ga.births);
-    for (std::size_t i = 0; i < s.ga.population.size(); ++i) check_recorded(s.ga.population[i], rows, at("ga.population", i));
+    const SearchView v = view_of(s);
+    const std::optional<Individual>& best = *v.best;
+    const std::vector<LineageRow> rows = parse_lineage(lineage, v.births, v.name);
+    for (std::size_t i = 0; i < v.members.size(); ++i) check_recorded(*v.members[i], rows, at(v.members_name.c_str(), i));
     const LineageRow* first_best = nullptr;
     for (const LineageRow& row : rows)
         if (row.valid && (first_best == nullptr || row.fitness > first_best->fitness)) first_best = &row;
-    if (s.ga.best) {
-        check_recorded(*s.ga.best, rows, "ga.best");
-        if (first_best == nullptr || first_best->id != s.ga.best->id)
-            contradiction("ga.best (id " + std::to_string(s.ga.best->id) +
+    if (best) {
+        check_recorded(*best, rows, v.name + ".best");
+        if (first_best == nullptr || first_best->id != best->id)
+            contradiction(v.name + ".best (id " + std::to_string(best->id) +
                           ") is not the first birth of the highest fitness in lineage.csv");
     } else if (first_best != nullptr) {
-        contradiction("ga.best is null but lineage.csv records valid birth " + std::to_string(first_best->id));
+        contradiction(v.name + ".best is null but lineage.csv records valid birth " + std::to_string(first_best->id));
     }
     for (std::size_t g = 0; g < s.history.size(); ++g) {
         const std::uint64_t invalid = invalid_between(rows, g * P, (g + 1) * P);
@@ -175,9 +214,9 @@ void check_checkpoint_against_lineage(const RunState& s, std::string_view lineag
                           std::to_string(g));
     }
     const std::uint64_t current = s.history.size() * P;
-    if (s.ga.invalid_in_generation != invalid_between(rows, current, s.ga.births))
-        contradiction("ga.invalid_in_generation is " + std::to_string(s.ga.invalid_in_generation) +
-                      ", lineage.csv records " + std::to_string(invalid_between(rows, current, s.ga.births)));
+    if (v.invalid_in_generation != invalid_between(rows, current, v.births))
+        contradiction(v.name + ".invalid_in_generation is " + std::to_string(v.invalid_in_generation) +
+                      ", lineage.csv records " + std::to_string(invalid_between(rows, current, v.births)));
 }
 
 }  // namespace morphogen

@@ -5,6 +5,7 @@
 #include "evolution_run.hpp"
 #include "exit_codes.hpp"
 #include "stop_signals.hpp"
+#include "archive_csv.hpp"
 #include "resource_options.hpp"
 
 #include <chrono>
@@ -55,7 +56,7 @@ int run_evolve(const EvolveOptions& o) {
     RunSession session{paths,
                        config,
                        RunState{},
-                       AppendFile::create(paths.history, history_header),
+                       AppendFile::create(paths.history, history_header_for(config.algorithm == Algorithm::map_elites)),
                        AppendFile::create(paths.lineage, lineage_header),
                        std::move(log)};
     // The first checkpoint (no births yet) makes the directory resumable.
@@ -63,6 +64,10 @@ int run_evolve(const EvolveOptions& o) {
     session.state.seed = config.run.seed;
     session.state.lineage_bytes = session.lineage.size();
     session.state.lineage_hash = session.lineage.hash_hex();
+    if (config.algorithm == Algorithm::map_elites) {
+        session.state.elites = initial_elites_state(config, resolve_threads(config.run.threads));
+        write_file_atomically(paths.archive, archive_csv(session.state.elites->archive));
+    }
     save_checkpoint(paths.checkpoint, session.state);
     return run_session(session, problem);
 }
@@ -70,7 +75,7 @@ int run_evolve(const EvolveOptions& o) {
 
 void add_evolve_command(CLI::App& root, CommandRunner& selected) {
     auto options = std::make_shared<EvolveOptions>();
-    CLI::App* cmd = root.add_subcommand("evolve", "Run the genetic algorithm of a config into a new run directory");
+    CLI::App* cmd = root.add_subcommand("evolve", "Run the search of a config (the GA or MAP-Elites) into a new run directory");
     cmd->add_option("config", options->config, "experiment config (JSON)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", options->out, "run directory (default runs/<name>-<YYYYmmdd-HHMMSS>)");
     options->seed_option = cmd->add_option("--seed", options->seed, "replaces run.seed");

@@ -33,7 +33,7 @@ void check_same_experiment(const nlohmann::json& checkpoint_config, const nlohma
                            const std::string& file) {
     auto deciding = [](const nlohmann::json& c) {
         nlohmann::json out = nlohmann::json::object();
-        for (const char* section : {"network", "growth", "fitness", "evolution"})
+        for (const char* section : {"network", "growth", "fitness", "evolution", "descriptors", "archive"})
             out[section] = c.is_object() && c.contains(section) ? c[section] : nlohmann::json();
         out["run"]["seed"] = c.is_object() && c.contains("run") && c["run"].is_object() && c["run"].contains("seed")
                                  ? c["run"]["seed"]
@@ -78,7 +78,7 @@ int run_resume(const ResumeOptions& o) {
                               paths.lineage.string() + ": " + e.what());
     }
 
-    if (state.ga.births >= (config.run.generations + 1) * P) {
+    if (state.births() >= (config.run.generations + 1) * P) {
         std::cout << o.dir << ": generation " << config.run.generations
                   << " already reached; nothing to do (pass --generations to go further)\n";
         return exit_code::ok;
@@ -96,12 +96,12 @@ int run_resume(const ResumeOptions& o) {
     // Cut everything written after the checkpoint: rows, exports, temporary files.
     prepare_resumed_run_files(paths, state.history.size());
     if (config.resolved != on_disk) write_file_atomically(paths.config, config.resolved.dump(2) + "\n");
-    std::string history_text = history_header;
+    std::string history_text = history_header_for(config.algorithm == Algorithm::map_elites);
     for (const HistoryRow& row : state.history) history_text += format_history_row(row);
     AppendFile history = AppendFile::create(paths.history, history_text);
     AppendFile lineage = AppendFile::resume(paths.lineage, state.lineage_bytes, state.lineage_hash);
     RunSession session{paths, config, std::move(state), std::move(history), std::move(lineage), std::move(log)};
-    session.log.both->info("resuming {} after {} births", o.dir, session.state.ga.births);
+    session.log.both->info("resuming {} after {} births", o.dir, session.state.births());
     return run_session(session, problem);
 }
 }  // namespace

@@ -1,6 +1,11 @@
 #include "evolution_run.hpp"
 
+#include "archive_csv.hpp"
+#include "archive_stats.hpp"
+#include "atomic_file.hpp"
+#include "cvt.hpp"
 #include "errors.hpp"
+#include "map_elites.hpp"
 #include "exit_codes.hpp"
 #include "growth_problem.hpp"
 #include "operators.hpp"
@@ -31,6 +36,101 @@ const Individual* best_member(const std::vector<Individual>& population) {
         if (best == nullptr || ranks_above(member, *best)) best = &member;
     return best != nullptr && best->valid() ? best : nullptr;
 }
+
+// What the run loop needs of a search, for the GA and MAP-Elites alike: one
+// batch (children in birth order with their errors, whether it ended a
+// generation and that generation's invalid births), the best ever, the
+// statistics of a history row, the individual exported to best/, and saving
+// the state into the checkpoint's RunState.
+struct StepResult {
+    std::vector<Individual> children;
+    std::vector<std::string> errors;
+    bool ends_generation = false;
+    std::uint64_t generation_invalid = 0;
+    std::uint64_t generation_new_cells = 0;
+};
+
+class GaDriver {
+public:
+    GaDriver(const ExperimentConfig& c, Problem& problem, RunState& state)
+        : ga_(c.evolution, c.run.seed, problem, std::move(state.ga)) {}
+    std::uint64_t births() const { return ga_.state().births; }
+    std::uint64_t completed_generations() const { return ga_.completed_generations(); }
+    const std::optional<Individual>& best() const { return ga_.state().best; }
+    StepResult step(int threads) {
+        BatchOutcome out = ga_.step(threads);
+        return {std::move(out.children), std::move(out.errors), out.ends_generation, out.generation_invalid, 0};
+    }
+    void fill(HistoryRow& row, const StepResult&) const {
+        const PopulationStats stats = summarize(ga_.state().population);
+        row.best = stats.best;
+        row.mean = stats.mean;
+        row.median = stats.median;
+        row.worst = stats.worst;
+        row.mean_vertices = stats.mean_size;
+    }
+    const Individual* exported() const { return best_member(ga_.state().population); }
+    void save(RunState& state) const { state.ga = ga_.state(); }
+    std::string archive_text() const { return {}; }
+
+private:
+    SteadyStateGA ga_;
+};
+
+MapElitesParams map_elites_params(const GaParams& p) {
+    return {p.population, p.crossover, p.mutation_rate, p.mutation_sigma, p.batch, p.init_range};
+}
+
+}  // namespace
+
+MapElitesState initial_elites_state(const ExperimentConfig& c, int threads) {
+    if (c.qd.archive == ArchiveKind::grid) return MapElitesState{0, Archive::grid(c.qd.descriptors), {}, 0, 0};
+    return MapElitesState{
+        0, Archive::cvt(c.qd.descriptors, cvt_centroids(c.run.seed, c.qd.cvt_cells, c.qd.descriptors.size(), threads)),
+        {}, 0, 0};
+}
+
+namespace {
+class EliteDriver {
+public:
+    EliteDriver(const ExperimentConfig& c, Problem& problem, RunState& state, int threads)
+        : offset_(c.qd.qd_offset),
+          me_(map_elites_params(c.evolution), c.run.seed, problem,
+              state.elites ? std::move(*state.elites) : initial_elites_state(c, threads)) {}
+    std::uint64_t births() const { return me_.state().births; }
+    std::uint64_t completed_generations() const { return me_.completed_generations(); }
+    const std::optional<Individual>& best() const { return me_.state().best; }
+    StepResult step(int threads) {
+        EliteBatchOutcome out = me_.step(threads);
+        return {std::move(out.children), std::move(out.errors), out.ends_generation, out.generation_invalid,
+                out.generation_new_cells};
+    }
+    void fill(HistoryRow& row, const StepResult& step) const {
+        const ArchiveStats stats = archive_stats(me_.state().archive, offset_);
+        row.best = stats.fitness.best;
+        row.mean = stats.fitness.mean;
+        row.median = stats.fitness.median;
+        row.worst = stats.fitness.worst;
+        row.mean_vertices = stats.fitness.mean_size;
+        row.qd = true;
+        row.coverage = stats.coverage;
+        row.qd_score = stats.qd_score;
+        row.new_cells = step.generation_new_cells;
+    }
+    // The fittest elite (ties: the lower cell).
+    const Individual* exported() const {
+        const Individual* best = nullptr;
+        for (const auto& [cell, elite] : me_.state().archive.elites())
+            if (best == nullptr || elite.fitness > best->fitness) best = &elite;
+        return best;
+    }
+    void save(RunState& state) const { state.elites = me_.state(); }
+    std::string archive_text() const { return archive_csv(me_.state().archive); }
+
+private:
+    double offset_;
+    MapElites me_;
+};
 }  // namespace
 
 RunLoggers make_run_loggers(const RunPaths& paths) {
@@ -61,23 +161,23 @@ RunLoggers make_run_loggers(const RunPaths& paths) {
 int resolve_threads(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
 namespace {
-int run_loop(RunSession& s, GrowthProblem& problem) {
+template <class Driver>
+int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
     const ExperimentConfig& config = s.config;
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
     const std::uint64_t target_births = (config.run.generations + 1) * P;
     const int threads = resolve_threads(config.run.threads);
     auto& log = s.log.both;
 
-    SteadyStateGA ga(config.evolution, config.run.seed, problem, std::move(s.state.ga));
     Progress progress(s.log.both, s.log.file_only, target_births, config.run.generations);
     log->info("run directory {}: population {}, generation {}/{} ({} births done), {} threads, seed {}",
-              s.paths.dir.string(), P, ga.completed_generations(), config.run.generations, ga.state().births,
+              s.paths.dir.string(), P, ga.completed_generations(), config.run.generations, ga.births(),
               threads, config.run.seed);
 
     const auto session_start = Clock::now();
     const double elapsed_before = s.state.elapsed_s;
     auto generation_start = session_start;
-    std::uint64_t generation_first_birth = ga.state().births;
+    std::uint64_t generation_first_birth = ga.births();
 
     // spdlog reports a failed log write to the handler, not to us: check it.
     auto check_log = [&] {
@@ -89,24 +189,26 @@ int run_loop(RunSession& s, GrowthProblem& problem) {
         s.lineage.sync();
         s.state.config = config.resolved;
         s.state.seed = config.run.seed;
-        s.state.ga = ga.state();
+        ga.save(s.state);
         s.state.lineage_bytes = s.lineage.size();
         s.state.lineage_hash = s.lineage.hash_hex();
         s.state.elapsed_s = elapsed_before + seconds_since(session_start);
+        // archive.csv first: a checkpoint never refers to an older archive.csv.
+        if (config.algorithm == Algorithm::map_elites) write_file_atomically(s.paths.archive, ga.archive_text());
         save_checkpoint(s.paths.checkpoint, s.state);
     };
 
-    progress.batch(ga.state().births, ga.completed_generations(),
-                   ga.state().best ? std::optional<double>(ga.state().best->fitness) : std::nullopt);
-    while (ga.state().births < target_births) {
+    progress.batch(ga.births(), ga.completed_generations(),
+                   ga.best() ? std::optional<double>(ga.best()->fitness) : std::nullopt);
+    while (ga.births() < target_births) {
         if (StopSignals::requested()) {
             checkpoint();
             progress.clear();
             log->warn("stopped by signal {} after {} births; checkpoint saved. Continue with: morphogen resume {}",
-                      StopSignals::signal_number(), ga.state().births, s.paths.dir.string());
+                      StopSignals::signal_number(), ga.births(), s.paths.dir.string());
             return exit_code::interrupted;
         }
-        const BatchOutcome out = ga.step(threads);
+        const StepResult out = ga.step(threads);
         std::string rows;
         for (std::size_t i = 0; i < out.children.size(); ++i) {
             rows += format_lineage_row(out.children[i]);
@@ -117,21 +219,15 @@ int run_loop(RunSession& s, GrowthProblem& problem) {
         }
         s.lineage.write(rows);
         check_log();
-        const std::uint64_t births = ga.state().births;
-        progress.batch(births, births / P,
-                       ga.state().best ? std::optional<double>(ga.state().best->fitness) : std::nullopt);
+        const std::uint64_t births = ga.births();
+        progress.batch(births, births / P, ga.best() ? std::optional<double>(ga.best()->fitness) : std::nullopt);
         if (!out.ends_generation) continue;
 
         const std::uint64_t generation = births / P - 1;
-        const PopulationStats stats = summarize(ga.state().population);
         HistoryRow row;
         row.generation = generation;
         row.births = births;
-        row.best = stats.best;
-        row.mean = stats.mean;
-        row.median = stats.median;
-        row.worst = stats.worst;
-        row.mean_vertices = stats.mean_size;
+        ga.fill(row, out);
         row.invalid = out.generation_invalid;
         const double generation_seconds = seconds_since(generation_start);
         row.births_per_s =
@@ -145,7 +241,7 @@ int run_loop(RunSession& s, GrowthProblem& problem) {
         const bool last = births == target_births;
         const auto every = [&](std::uint64_t n) { return n > 0 && (generation % n == 0 || last); };
         if (config.run.export_every > 0 && every(config.run.export_every)) {
-            if (const Individual* best = best_member(ga.state().population))
+            if (const Individual* best = ga.exported())
                 problem.export_genome(best->params, s.paths.best_stem(generation));
         }
         if (last || every(config.run.checkpoint_every)) checkpoint();
@@ -153,9 +249,9 @@ int run_loop(RunSession& s, GrowthProblem& problem) {
         generation_first_birth = births;
     }
     progress.clear();
-    if (ga.state().best)
+    if (ga.best())
         log->info("done: generation {} reached; best fitness {} (individual {})", config.run.generations,
-                  format_number(ga.state().best->fitness), ga.state().best->id);
+                  format_number(ga.best()->fitness), ga.best()->id);
     else
         log->info("done: generation {} reached; no valid individual", config.run.generations);
     return exit_code::ok;
@@ -165,7 +261,12 @@ int run_loop(RunSession& s, GrowthProblem& problem) {
 
 int run_session(RunSession& s, GrowthProblem& problem) {
     try {
-        return run_loop(s, problem);
+        if (s.config.algorithm == Algorithm::map_elites) {
+            EliteDriver driver(s.config, problem, s.state, resolve_threads(s.config.run.threads));
+            return run_loop(s, problem, driver);
+        }
+        GaDriver driver(s.config, problem, s.state);
+        return run_loop(s, problem, driver);
     } catch (const IoError& e) {
         throw IoError(std::string(e.what()) + " (the last checkpoint is intact: free space or fix the file, then " +
                       "continue with morphogen resume " + s.paths.dir.string() + ")");

@@ -46,6 +46,11 @@ struct RunSession {
 // then intact and the run can be resumed.
 int run_session(RunSession& session, GrowthProblem& problem);
 
+// A new MAP-Elites run's empty archive, for the first checkpoint: a CVT's
+// centroids are computed from run.seed here, once; later sessions read them
+// from the checkpoint.
+MapElitesState initial_elites_state(const ExperimentConfig& config, int threads);
+
 // The number of worker threads for run.threads (0 = all cores).
 int resolve_threads(int threads);
 

@@ -35,7 +35,8 @@ RunPaths run_paths(const fs::path& dir) {
             dir / "lineage.csv",
             dir / "checkpoint.json",
             dir / "best",
-            dir / "log.txt"};
+            dir / "log.txt",
+            dir / "archive.csv"};
 }
 
 fs::path default_run_dir(const std::string& name, std::chrono::system_clock::time_point now) {
@@ -98,11 +99,12 @@ bool is_stopped_start(const RunPaths& paths) {
         }
         bool known = false;
         for (const fs::path& name : ours) known = known || p == name || p == temporary_path(name);
-        known = known || p == temporary_path(paths.checkpoint);
+        known = known || p == temporary_path(paths.checkpoint) || p == temporary_path(paths.archive);
         if (!known) return false;
     }
     if (ec) return false;
-    return holds_no_rows(paths.history, history_header) && holds_no_rows(paths.lineage, lineage_header);
+    return (holds_no_rows(paths.history, history_header) || holds_no_rows(paths.history, history_header_qd)) &&
+           holds_no_rows(paths.lineage, lineage_header);
 }
 
 void create_run_dir(const RunPaths& paths, bool force) {
@@ -119,7 +121,7 @@ void create_run_dir(const RunPaths& paths, bool force) {
 }
 
 void clear_run_files(const RunPaths& paths) {
-    for (const fs::path& p : {paths.config, paths.history, paths.lineage, paths.checkpoint, paths.log}) {
+    for (const fs::path& p : {paths.config, paths.history, paths.lineage, paths.checkpoint, paths.log, paths.archive}) {
         remove_file(p);
         remove_file(temporary_path(p));
     }
@@ -134,7 +136,7 @@ void clear_run_files(const RunPaths& paths) {
 }
 
 void prepare_resumed_run_files(const RunPaths& paths, std::uint64_t first_generation) {
-    for (const fs::path& p : {paths.config, paths.history, paths.lineage, paths.checkpoint})
+    for (const fs::path& p : {paths.config, paths.history, paths.lineage, paths.checkpoint, paths.archive})
         remove_file(temporary_path(p));
     std::error_code ec;
     fs::create_directories(paths.best, ec);

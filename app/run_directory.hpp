@@ -10,6 +10,7 @@ namespace morphogen {
 
 struct RunPaths {
     std::filesystem::path dir, config, history, lineage, checkpoint, best, log;
+    std::filesystem::path archive;  // archive.csv (MAP-Elites runs)
     // best/gen_NNNN (no extension): the stem of generation g's exports.
     std::filesystem::path best_stem(std::uint64_t generation) const;
 };
@@ -32,7 +33,7 @@ bool is_stopped_start(const RunPaths& paths);
 // clear_run_files().
 void create_run_dir(const RunPaths& paths, bool force);
 // Removes the files morphogen writes in a run directory (config.json,
-// history.csv, lineage.csv, checkpoint.json, log.txt, best/gen_*, and their
+// history.csv, lineage.csv, checkpoint.json, log.txt, archive.csv, best/gen_*, and their
 // temporary files) and nothing else; creates best/.
 void clear_run_files(const RunPaths& paths);
 // For a resume: removes temporary files a crash left (<file>.tmp in the run

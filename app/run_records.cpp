@@ -31,7 +31,10 @@ std::optional<double> optional_from(const json& object, const char* key) {
 std::string format_history_row(const HistoryRow& r) {
     return std::to_string(r.generation) + ',' + std::to_string(r.births) + ',' + cell(r.best) + ',' + cell(r.mean) +
            ',' + cell(r.median) + ',' + cell(r.worst) + ',' + cell(r.mean_vertices) + ',' +
-           std::to_string(r.invalid) + ',' + format_number(r.births_per_s) + ',' + format_number(r.elapsed_s) + '\n';
+           std::to_string(r.invalid) + ',' +
+           (r.qd ? format_number(r.coverage) + ',' + format_number(r.qd_score) + ',' + std::to_string(r.new_cells) + ','
+                 : std::string()) +
+           format_number(r.births_per_s) + ',' + format_number(r.elapsed_s) + '\n';
 }
 
 std::string format_lineage_row(const Individual& ind) {
@@ -46,11 +49,17 @@ std::string format_lineage_row(const Individual& ind) {
 }
 
 json history_row_to_json(const HistoryRow& r) {
-    return json{{"generation", r.generation},        {"births", r.births},
+    json row{{"generation", r.generation},        {"births", r.births},
                 {"best", optional_json(r.best)},     {"mean", optional_json(r.mean)},
                 {"median", optional_json(r.median)}, {"worst", optional_json(r.worst)},
                 {"mean_vertices", optional_json(r.mean_vertices)}, {"invalid", r.invalid},
                 {"births_per_s", r.births_per_s},    {"elapsed_s", r.elapsed_s}};
+    if (r.qd) {
+        row["coverage"] = r.coverage;
+        row["qd_score"] = r.qd_score;
+        row["new_cells"] = r.new_cells;
+    }
+    return row;
 }
 
 HistoryRow history_row_from_json(const json& value) {
@@ -66,6 +75,14 @@ HistoryRow history_row_from_json(const json& value) {
         r.invalid = value.at("invalid").get<std::uint64_t>();
         r.births_per_s = value.at("births_per_s").get<double>();
         r.elapsed_s = value.at("elapsed_s").get<double>();
+        if (value.contains("coverage")) {
+            r.qd = true;
+            r.coverage = value.at("coverage").get<double>();
+            r.qd_score = value.at("qd_score").get<double>();
+            r.new_cells = value.at("new_cells").get<std::uint64_t>();
+            if (!std::isfinite(r.coverage) || !std::isfinite(r.qd_score) || r.coverage < 0 || r.coverage > 1)
+                throw std::invalid_argument("history row: coverage or qd_score out of range");
+        }
         return r;
     } catch (const json::exception& e) {
         throw std::invalid_argument(std::string("history row: ") + e.what());

@@ -16,6 +16,12 @@ namespace morphogen {
 
 inline constexpr const char* history_header =
     "generation,births,best,mean,median,worst,mean_vertices,invalid,births_per_s,elapsed_s\n";
+// MAP-Elites runs (statistics over the archive's elites; ALGORITHM.md §8).
+inline constexpr const char* history_header_qd =
+    "generation,births,best,mean,median,worst,mean_vertices,invalid,coverage,qd_score,new_cells,births_per_s,"
+    "elapsed_s\n";
+inline const char* history_header_for(bool qd) { return qd ? history_header_qd : history_header; }
+inline constexpr const char* archive_header_tail = "fitness,id\n";  // archive.csv: cell,<descriptors>,fitness,id
 inline constexpr const char* lineage_header = "id,birth,parent1,parent2,fitness\n";
 
 struct HistoryRow {
@@ -25,14 +31,21 @@ struct HistoryRow {
     std::uint64_t invalid = 0;  // invalid births in this generation
     double births_per_s = 0.0;  // timing: differs between runs
     double elapsed_s = 0.0;
+    // MAP-Elites runs only (qd): occupied / all cells, sum of (fitness - qd_offset), cells first filled this generation.
+    bool qd = false;
+    double coverage = 0.0, qd_score = 0.0;
+    std::uint64_t new_cells = 0;
 };
 
 // Shortest text that parses back to exactly `value` (finite values only).
 std::string format_number(double value);
+// With the QD columns exactly when row.qd.
 std::string format_history_row(const HistoryRow& row);
 // id,birth,parent1,parent2,fitness (birth repeats the id: ids are birth indices).
 std::string format_lineage_row(const Individual& individual);
 
+// The QD keys (coverage, qd_score, new_cells) only when row.qd, so GA
+// checkpoints are as before; read back when present.
 nlohmann::json history_row_to_json(const HistoryRow& row);
 // Throws std::invalid_argument naming the defect.
 HistoryRow history_row_from_json(const nlohmann::json& value);

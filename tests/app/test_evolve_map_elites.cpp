@@ -1,0 +1,209 @@
+// MAP-Elites runs end to end (evolve / resume with evolution.algorithm
+// "map_elites"): the same bytes for any thread count and after a resume,
+// archive.csv against lineage.csv and the checkpoint, damaged archives
+// refused, and CVT centroids carried by the checkpoint.
+#include "app/evolve_test_support.hpp"
+#include "checkpoint.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace morphogen;
+using namespace morphogen::test;
+
+namespace {
+
+std::string me_config(int generations, const std::string& archive = R"({"type": "grid", "qd_offset": -1})",
+                      const std::string& descriptors = R"([{"measure": "height", "min": 0, "max": 3, "bins": 6},
+                                                           {"measure": "footprint", "min": 0, "max": 10, "bins": 5}])") {
+    return R"({"network": {"outputs": 4, "hidden": [5]},
+ "growth": {"steps": 12, "max_vertices": 300},
+ "fitness": {"type": "canopy", "height": 1, "cell": 0.1},
+ "evolution": {"algorithm": "map_elites", "population": 12, "batch": 4, "mutation_rate": 0.2},
+ "descriptors": )" + descriptors + R"(,
+ "archive": )" + archive + R"(,
+ "run": {"seed": 3, "generations": )" + std::to_string(generations) + R"(, "export_every": 2}})";
+}
+
+std::vector<std::string> lines_of(const std::string& text) {
+    std::vector<std::string> lines;
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    return lines;
+}
+
+std::vector<std::string> cells_of(const std::string& line) {
+    std::vector<std::string> cells;
+    std::string cell;
+    std::istringstream in(line);
+    while (std::getline(in, cell, ',')) cells.push_back(cell);
+    if (!line.empty() && line.back() == ',') cells.emplace_back();
+    return cells;
+}
+
+void check_same_elite_runs(const fs::path& a, const fs::path& b) {
+    check_same_results(a, b);
+    CHECK(read_text(a / "archive.csv") == read_text(b / "archive.csv"));
+    for (const char* name : {"gen_0000.obj", "gen_0004.genome.json", "gen_0005.glb"}) {
+        INFO(name);
+        CHECK(read_text(a / "best" / name) == read_text(b / "best" / name));
+    }
+}
+}  // namespace
+
+TEST_CASE("a MAP-Elites run gives the same files for 1 and 2 threads and after a resume", "[app][map_elites][evolve]") {
+    TempDir tmp("me-run");
+    write_text(tmp.path / "me.json", me_config(5));
+    const std::string config = (tmp.path / "me.json").string();
+    const CliResult one = run_morphogen("evolve " + config + " --out " + (tmp.path / "one").string() + " --threads 1");
+    REQUIRE(one.code == 0);
+    REQUIRE(run_morphogen("evolve " + config + " --out " + (tmp.path / "two").string() + " --threads 2").code == 0);
+    check_same_elite_runs(tmp.path / "one", tmp.path / "two");
+
+    // stop after generation 2 (a finished shorter run), then resume to 5 with another thread count
+    REQUIRE(run_morphogen("evolve " + config + " --out " + (tmp.path / "split").string() +
+                          " --threads 2 --generations 2")
+                .code == 0);
+    const std::string archive_at_2 = read_text(tmp.path / "split" / "archive.csv");
+    CHECK(archive_at_2 != read_text(tmp.path / "one" / "archive.csv"));  // the archive grew after generation 2
+    REQUIRE(run_morphogen("resume " + (tmp.path / "split").string() + " --generations 5 --threads 1").code == 0);
+    check_same_elite_runs(tmp.path / "one", tmp.path / "split");
+
+    // the history has the MAP-Elites columns; coverage and new cells add up
+    const std::vector<std::string> history = lines_of(read_text(tmp.path / "one" / "history.csv"));
+    REQUIRE(history.size() == 7);
+    CHECK(history[0] ==
+          "generation,births,best,mean,median,worst,mean_vertices,invalid,coverage,qd_score,new_cells,births_per_s,"
+          "elapsed_s");
+    std::uint64_t filled = 0;
+    for (std::size_t g = 1; g < history.size(); ++g) filled += std::stoull(cells_of(history[g])[10]);
+    const std::vector<std::string> archive = lines_of(read_text(tmp.path / "one" / "archive.csv"));
+    CHECK(filled == archive.size() - 1);  // every occupied cell was first filled in some generation
+    CHECK(std::stod(cells_of(history.back())[8]) == Approx(static_cast<double>(archive.size() - 1) / 30.0));
+}
+
+TEST_CASE("archive.csv agrees with lineage.csv and the checkpoint", "[app][map_elites][evolve]") {
+    TempDir tmp("me-archive");
+    write_text(tmp.path / "me.json", me_config(4));
+    REQUIRE(run_morphogen("evolve " + (tmp.path / "me.json").string() + " --out " + (tmp.path / "run").string())
+                .code == 0);
+    const std::vector<std::string> archive = lines_of(read_text(tmp.path / "run" / "archive.csv"));
+    const std::vector<std::string> lineage = lines_of(read_text(tmp.path / "run" / "lineage.csv"));
+    REQUIRE(archive.size() > 2);
+    CHECK(archive[0] == "cell,height,footprint,fitness,id");
+    const RunState state = load_checkpoint(tmp.path / "run" / "checkpoint.json");
+    REQUIRE(state.elites);
+    CHECK(state.elites->archive.occupied() == archive.size() - 1);
+    double best = -1e300;
+    long previous = -1;
+    for (std::size_t i = 1; i < archive.size(); ++i) {
+        INFO(archive[i]);
+        const std::vector<std::string> row = cells_of(archive[i]);
+        REQUIRE(row.size() == 5);
+        const long cell = std::stol(row[0]);
+        CHECK(cell > previous);  // cell order
+        previous = cell;
+        const std::uint64_t id = std::stoull(row[4]);
+        REQUIRE(id + 1 < lineage.size());
+        const std::vector<std::string> birth = cells_of(lineage[id + 1]);
+        CHECK(birth[0] == row[4]);
+        CHECK(birth[4] == row[3]);  // the same fitness text as lineage.csv
+        // the cell is where the descriptors fall: 6 height bins over [0,3] x 5 footprint bins over [0,10]
+        const auto bin = [](double x, double max, int bins) {
+            return std::clamp(static_cast<long>(x / max * bins), 0L, static_cast<long>(bins - 1));
+        };
+        CHECK(cell == bin(std::stod(row[1]), 3, 6) * 5 + bin(std::stod(row[2]), 10, 5));
+        const Individual& elite = state.elites->archive.elites().at(static_cast<std::uint64_t>(cell));
+        CHECK(elite.id == id);
+        best = std::max(best, elite.fitness);
+    }
+    REQUIRE(state.elites->best);
+    CHECK(state.elites->best->fitness == best);
+}
+
+TEST_CASE("a damaged or inconsistent MAP-Elites checkpoint is refused and left as it was", "[app][map_elites][checkpoint]") {
+    TempDir tmp("me-damaged");
+    write_text(tmp.path / "me.json", me_config(3));
+    const fs::path run = tmp.path / "run";
+    REQUIRE(run_morphogen("evolve " + (tmp.path / "me.json").string() + " --out " + run.string() + " --generations 1")
+                .code == 0);
+    const std::string original = read_text(run / "checkpoint.json");
+    const nlohmann::json content = checkpoint_content(original, "test");
+    REQUIRE(content["map_elites"]["archive"]["elites"].size() >= 2);
+
+    const std::vector<std::pair<std::string, std::function<void(nlohmann::json&)>>> edits = {
+        {"map to cell", [](nlohmann::json& c) {
+             auto& e = c["map_elites"]["archive"]["elites"];
+             e[0]["descriptors"][0] = 2.99;  // moves it to another height bin
+         }},
+        {"increasing order", [](nlohmann::json& c) {
+             auto& e = c["map_elites"]["archive"]["elites"];
+             std::swap(e[0], e[1]);
+         }},
+        {"fitter than the best", [](nlohmann::json& c) {
+             c["map_elites"]["archive"]["elites"][0]["fitness"] = 1e9;
+         }},
+        {"parameters", [](nlohmann::json& c) { c["map_elites"]["archive"]["elites"][0]["params"].erase(0); }},
+        {"holds no map_elites state", [](nlohmann::json& c) {
+             c["ga"] = c["map_elites"];
+             c.erase("map_elites");
+         }},
+        {"a grid archive has none", [](nlohmann::json& c) {
+             c["map_elites"]["archive"]["centroids"] = nlohmann::json::array({0.5, 0.5});
+         }},
+        {"differs from its lineage.csv row", [](nlohmann::json& c) {
+             auto& e = c["map_elites"]["archive"]["elites"][0];
+             e["fitness"] = e["fitness"].get<double>() - 1e-3;
+         }},
+    };
+    for (const auto& [expected, edit] : edits) {
+        INFO(expected);
+        nlohmann::json changed = content;
+        edit(changed);
+        const std::string text = checkpoint_text(changed);
+        write_text(run / "checkpoint.json", text);
+        const CliResult result = run_morphogen("resume " + run.string());
+        CHECK(result.code == 5);
+        CHECK_THAT(result.output, Catch::Contains(expected));
+        CHECK(read_text(run / "checkpoint.json") == text);  // untouched
+    }
+    write_text(run / "checkpoint.json", original);
+    CHECK(run_morphogen("resume " + run.string()).code == 0);
+}
+
+TEST_CASE("a CVT run keeps its centroids in the checkpoint and resumes to the same bytes", "[app][map_elites][evolve]") {
+    TempDir tmp("me-cvt");
+    write_text(tmp.path / "cvt.json",
+               me_config(3, R"({"type": "cvt", "cells": 16})",
+                         R"([{"measure": "height", "min": 0, "max": 3}, {"measure": "footprint", "min": 0, "max": 10},
+                             {"measure": "spread", "min": 0, "max": 3}, {"measure": "vertices", "min": 0, "max": 300}])"));
+    const std::string config = (tmp.path / "cvt.json").string();
+    REQUIRE(run_morphogen("evolve " + config + " --out " + (tmp.path / "whole").string() + " --threads 2").code == 0);
+    REQUIRE(run_morphogen("evolve " + config + " --out " + (tmp.path / "split").string() + " --generations 1").code ==
+            0);
+    REQUIRE(run_morphogen("resume " + (tmp.path / "split").string() + " --generations 3 --threads 2").code == 0);
+    check_same_results(tmp.path / "whole", tmp.path / "split");
+    CHECK(read_text(tmp.path / "whole" / "archive.csv") == read_text(tmp.path / "split" / "archive.csv"));
+    const nlohmann::json content = checkpoint_content(read_text(tmp.path / "whole" / "checkpoint.json"), "t");
+    CHECK(content["map_elites"]["archive"]["centroids"].size() == 16 * 4);
+    CHECK(lines_of(read_text(tmp.path / "whole" / "archive.csv"))[0] == "cell,height,footprint,spread,vertices,fitness,id");
+}
+
+TEST_CASE("a steady-state run's files have no MAP-Elites columns", "[app][map_elites][evolve]") {
+    TempDir tmp("me-ga");
+    write_text(tmp.path / "ga.json", tiny_config(1));
+    REQUIRE(run_morphogen("evolve " + (tmp.path / "ga.json").string() + " --out " + (tmp.path / "run").string()).code ==
+            0);
+    CHECK(lines_of(read_text(tmp.path / "run" / "history.csv"))[0] ==
+          "generation,births,best,mean,median,worst,mean_vertices,invalid,births_per_s,elapsed_s");
+    CHECK_FALSE(fs::exists(tmp.path / "run" / "archive.csv"));
+    const nlohmann::json content = checkpoint_content(read_text(tmp.path / "run" / "checkpoint.json"), "t");
+    CHECK(content.contains("ga"));
+    CHECK_FALSE(content.contains("map_elites"));
+    CHECK_FALSE(content["config"]["evolution"].contains("algorithm"));
+    CHECK_FALSE(content["history"][0].contains("coverage"));
+}
