@@ -8,6 +8,7 @@
 #include "evolution_run.hpp"
 #include "exit_codes.hpp"
 #include "stop_signals.hpp"
+#include "archive_csv.hpp"
 #include "resource_options.hpp"
 
 #include <filesystem>
@@ -96,6 +97,8 @@ int run_resume(const ResumeOptions& o) {
     // Cut everything written after the checkpoint: rows, exports, temporary files.
     prepare_resumed_run_files(paths, state.history.size());
     if (config.resolved != on_disk) write_file_atomically(paths.config, config.resolved.dump(2) + "\n");
+    // archive.csv is written just before each checkpoint: a stop between the two leaves a newer one.
+    if (state.elites) write_file_atomically(paths.archive, archive_csv(state.elites->archive));
     std::string history_text = history_header_for(config.algorithm == Algorithm::map_elites);
     for (const HistoryRow& row : state.history) history_text += format_history_row(row);
     AppendFile history = AppendFile::create(paths.history, history_text);
