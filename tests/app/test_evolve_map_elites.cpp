@@ -7,6 +7,10 @@
 
 #include <catch2/catch.hpp>
 
+#include <csignal>
+#include <chrono>
+#include <thread>
+
 #include <map>
 #include <sstream>
 #include <string>
@@ -206,4 +210,30 @@ TEST_CASE("a steady-state run's files have no MAP-Elites columns", "[app][map_el
     CHECK_FALSE(content.contains("map_elites"));
     CHECK_FALSE(content["config"]["evolution"].contains("algorithm"));
     CHECK_FALSE(content["history"][0].contains("coverage"));
+}
+
+TEST_CASE("a MAP-Elites run stopped by Ctrl-C or kill -9 resumes to the same bytes", "[app][map_elites][signals]") {
+    TempDir tmp("me-signal");
+    write_text(tmp.path / "me.json", me_config(100000));  // far more than it reaches before the signal
+    const std::string config = (tmp.path / "me.json").string();
+    for (int signal : {SIGINT, SIGKILL}) {
+        CAPTURE(signal);
+        const fs::path dir = tmp.path / ("sig" + std::to_string(signal));
+        const int pid = spawn_morphogen({"evolve", config, "--out", dir.string(), "--threads", "2"}, tmp.path / "spawn.log");
+        for (int i = 0; i < 2000 && lines_of(read_text(dir / "history.csv")).size() < 4; ++i)
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        ::kill(pid, signal);
+        const int code = wait_for(pid);
+        CHECK(code == (signal == SIGKILL ? 128 + SIGKILL : 130));
+        const std::uint64_t stopped =
+            checkpoint_content(read_text(dir / "checkpoint.json"), "t")["map_elites"]["births"].get<std::uint64_t>() / 12;
+        const std::string target = std::to_string(std::max<std::uint64_t>(stopped + 2, 4));
+        REQUIRE(run_morphogen("resume " + dir.string() + " --generations " + target + " --threads 1").code == 0);
+        const fs::path whole = tmp.path / ("whole" + std::to_string(signal));
+        REQUIRE(run_morphogen("evolve " + config + " --out " + whole.string() + " --generations " + target +
+                              " --threads 1")
+                    .code == 0);
+        check_same_results(whole, dir);
+        CHECK(read_text(whole / "archive.csv") == read_text(dir / "archive.csv"));
+    }
 }
