@@ -18,5 +18,6 @@ void add_evolve_command(CLI::App& root, CommandRunner& selected);
 void add_resume_command(CLI::App& root, CommandRunner& selected);
 void add_validate_command(CLI::App& root, CommandRunner& selected);
 void add_score_command(CLI::App& root, CommandRunner& selected);
+void add_archive_command(CLI::App& root, CommandRunner& selected);
 
 }  // namespace morphogen

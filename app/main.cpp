@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
     add_resume_command(app, selected);
     add_validate_command(app, selected);
     add_score_command(app, selected);
+    add_archive_command(app, selected);
 
     try {
         app.parse(argc, argv);

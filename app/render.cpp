@@ -321,6 +321,11 @@ void blit(Image& dst, const Image& src, int x0, int y0) {
 
 }  // namespace
 
+void draw_label(Image& image, int x, int y, const std::string& text, int scale, std::uint8_t grey) {
+    draw_text(image, x, y, text, scale, grey);
+}
+int label_width(const std::string& text, int scale) { return text_width(text, scale); }
+
 int sheet_cell_height(int size) { return size + caption_height(size); }
 
 Image render_mesh(MeshView mesh, const RenderOptions& options) {

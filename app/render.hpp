@@ -60,6 +60,11 @@ Image render_sheet(std::span<const MeshArrays> meshes, std::span<const std::stri
 // Height of one sheet cell: the size x size picture plus its caption line.
 int sheet_cell_height(int size);
 
+// Text in the sheets' 7-pixel vector font scaled by `scale`, its top-left
+// corner at (x, y), clipped to the image; and its width in pixels.
+void draw_label(Image& image, int x, int y, const std::string& text, int scale, std::uint8_t grey);
+int label_width(const std::string& text, int scale);
+
 // Writes `image` as a PNG; throws IoError("<path>: ...") on failure.
 void write_png(const Image& image, const std::string& path);
 

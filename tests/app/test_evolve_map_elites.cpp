@@ -4,6 +4,7 @@
 // refused, and CVT centroids carried by the checkpoint.
 #include "app/evolve_test_support.hpp"
 #include "checkpoint.hpp"
+#include "run_records.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -236,4 +237,49 @@ TEST_CASE("a MAP-Elites run stopped by Ctrl-C or kill -9 resumes to the same byt
         check_same_results(whole, dir);
         CHECK(read_text(whole / "archive.csv") == read_text(dir / "archive.csv"));
     }
+}
+
+TEST_CASE("morphogen archive exports elites that regrow to their stored fitness and cell", "[app][map_elites][archive]") {
+    TempDir tmp("me-export");
+    write_text(tmp.path / "me.json", me_config(3));
+    const fs::path run = tmp.path / "run";
+    REQUIRE(run_morphogen("evolve " + (tmp.path / "me.json").string() + " --out " + run.string()).code == 0);
+    const fs::path out = tmp.path / "elites";
+    const CliResult all = run_morphogen("archive " + run.string() + " --out " + out.string() + " --png " +
+                                        (tmp.path / "map.png").string() + " --size 32");
+    REQUIRE(all.code == 0);
+    CHECK(fs::file_size(tmp.path / "map.png") > 1000);
+    const std::vector<std::string> archive = lines_of(read_text(run / "archive.csv"));
+    const std::vector<std::string> species = lines_of(read_text(out / "species.csv"));
+    REQUIRE(species.size() == archive.size());
+    CHECK(species[0] == "cell,height,footprint,fitness,file");
+    for (std::size_t i = 1; i < species.size(); ++i) {
+        INFO(species[i]);
+        const std::vector<std::string> s = cells_of(species[i]), a = cells_of(archive[i]);
+        CHECK(s[0] == a[0]);
+        CHECK(s[3] == a[3]);
+        for (const char* ext : {".glb", ".obj", ".genome.json"})
+            CHECK(fs::exists(out / (s[4].substr(0, s[4].size() - 4) + ext)));
+    }
+    // the first elite regrows (morphogen score) to its stored fitness and descriptors
+    const std::vector<std::string> first = cells_of(species[1]);
+    const std::string genome = (out / (first[4].substr(0, first[4].size() - 4) + ".genome.json")).string();
+    const CliResult score =
+        run_morphogen("score --genome " + genome + " --config " + (run / "config.json").string() + " --json");
+    REQUIRE(score.code == 0);
+    const nlohmann::json scored = nlohmann::json::parse(score.output);
+    CHECK(format_number(scored["fitness"].get<double>()) == first[3]);
+    CHECK(format_number(scored["height"].get<double>()) == first[1]);
+    CHECK(format_number(scored["footprint"].get<double>()) == first[2]);
+
+    // --top keeps the N fittest
+    REQUIRE(run_morphogen("archive " + run.string() + " --out " + (tmp.path / "top").string() + " --top 2").code == 0);
+    CHECK(lines_of(read_text(tmp.path / "top" / "species.csv")).size() == 3);
+    // a GA run has no archive: refused (exit 2)
+    write_text(tmp.path / "ga.json", tiny_config(1));
+    REQUIRE(run_morphogen("evolve " + (tmp.path / "ga.json").string() + " --out " + (tmp.path / "ga").string()).code ==
+            0);
+    const CliResult ga = run_morphogen("archive " + (tmp.path / "ga").string());
+    CHECK(ga.code == 2);
+    CHECK_THAT(ga.output, Catch::Contains("not a MAP-Elites run"));
 }
