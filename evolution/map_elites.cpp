@@ -10,29 +10,21 @@ namespace morphogen {
 
 namespace {
 void check_params(const MapElitesParams& p) {
-    auto require = [](bool ok, const char* what) {
-        if (!ok) throw std::invalid_argument(std::string("MAP-Elites parameter out of range: ") + what);
-    };
-    require(p.population >= 1, "population >= 1");
-    require(p.crossover >= 0 && p.crossover <= 1, "0 <= crossover <= 1");
-    require(p.mutation_rate >= 0 && p.mutation_rate <= 1, "0 <= mutation_rate <= 1");
-    require(p.mutation_sigma >= 0 && std::isfinite(p.mutation_sigma), "mutation_sigma >= 0");
-    require(p.batch >= 1, "batch >= 1");
-    require(p.init_range >= 0 && std::isfinite(p.init_range), "init_range >= 0");
+    if (p.population < 1) throw std::invalid_argument("MAP-Elites parameter out of range: population >= 1");
 }
 }  // namespace
 
 MapElites::MapElites(const MapElitesParams& params, std::uint64_t seed, Problem& problem, MapElitesState state)
     : params_(params), seed_(seed), problem_(problem), state_(std::move(state)) {
     check_params(params_);
+    check_shared_params(rules(), params_.batch, "MAP-Elites");
     blocks_ = check_blocks(problem_.blocks(), problem_.dimension());
 }
 
 EliteBatchOutcome MapElites::step(int threads) {
     const std::size_t count = batch_size(state_.births, population(), params_.batch);
     const std::size_t dimension = problem_.dimension();
-    const BirthRules rules{population(), params_.init_range, params_.crossover, params_.mutation_rate,
-                           params_.mutation_sigma};
+    const BirthRules rules = this->rules();
     // The parents of the whole batch: the elites before it, in cell-index order.
     const std::vector<const Individual*> snapshot = state_.archive.snapshot();
     ParentPicker pick;

@@ -12,6 +12,7 @@
 // child was invalid) is a random genome, as in generation 0.
 #include "archive.hpp"
 #include "individual.hpp"
+#include "operators.hpp"
 #include "problem.hpp"
 
 #include <cstdint>
@@ -70,6 +71,9 @@ public:
 
 private:
     std::uint64_t population() const { return static_cast<std::uint64_t>(params_.population); }
+    BirthRules rules() const {
+        return {population(), params_.init_range, params_.crossover, params_.mutation_rate, params_.mutation_sigma};
+    }
 
     MapElitesParams params_;
     std::uint64_t seed_;

@@ -1,6 +1,7 @@
 #include "operators.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -61,6 +62,17 @@ bool insert_child(std::vector<Individual>& population, Individual child, std::si
 BirthRules birth_rules(const GaParams& params) {
     return {static_cast<std::uint64_t>(params.population), params.init_range, params.crossover, params.mutation_rate,
             params.mutation_sigma};
+}
+
+void check_shared_params(const BirthRules& r, int batch, const std::string& search) {
+    auto require = [&search](bool ok, const char* what) {
+        if (!ok) throw std::invalid_argument(search + " parameter out of range: " + what);
+    };
+    require(r.crossover >= 0 && r.crossover <= 1, "0 <= crossover <= 1");
+    require(r.mutation_rate >= 0 && r.mutation_rate <= 1, "0 <= mutation_rate <= 1");
+    require(r.mutation_sigma >= 0 && std::isfinite(r.mutation_sigma), "mutation_sigma >= 0");
+    require(batch >= 1, "batch >= 1");
+    require(r.init_range >= 0 && std::isfinite(r.init_range), "init_range >= 0");
 }
 
 Individual conceive_birth(const BirthRules& rules, std::span<const Block> blocks, std::size_t dimension,

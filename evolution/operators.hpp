@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <functional>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace morphogen {
@@ -57,6 +58,9 @@ struct BirthRules {
     double mutation_sigma = 0.0;   // standard deviation of that step
 };
 BirthRules birth_rules(const GaParams& params);
+// Checks what every search shares (the birth rules and the batch size);
+// throws std::invalid_argument("<search> parameter out of range: ...").
+void check_shared_params(const BirthRules& rules, int batch, const std::string& search);
 
 // Draws one parent from a frozen snapshot with the birth's own stream.
 using ParentPicker = std::function<const Individual&(RandomStream& stream)>;

@@ -11,16 +11,9 @@ namespace morphogen {
 
 namespace {
 void check_params(const GaParams& p) {
-    auto require = [](bool ok, const char* what) {
-        if (!ok) throw std::invalid_argument(std::string("GA parameter out of range: ") + what);
-    };
-    require(p.population >= 2, "population >= 2");
-    require(p.tournament >= 1, "tournament >= 1");
-    require(p.crossover >= 0 && p.crossover <= 1, "0 <= crossover <= 1");
-    require(p.mutation_rate >= 0 && p.mutation_rate <= 1, "0 <= mutation_rate <= 1");
-    require(p.mutation_sigma >= 0 && std::isfinite(p.mutation_sigma), "mutation_sigma >= 0");
-    require(p.batch >= 1, "batch >= 1");
-    require(p.init_range >= 0 && std::isfinite(p.init_range), "init_range >= 0");
+    if (p.population < 2) throw std::invalid_argument("GA parameter out of range: population >= 2");
+    if (p.tournament < 1) throw std::invalid_argument("GA parameter out of range: tournament >= 1");
+    check_shared_params(birth_rules(p), p.batch, "GA");
 }
 }  // namespace
 
