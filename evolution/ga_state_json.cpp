@@ -1,5 +1,7 @@
 #include "ga_state_json.hpp"
 
+#include "state_json_read.hpp"
+
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -8,24 +10,11 @@
 namespace morphogen {
 
 using nlohmann::json;
+using state_json::fail;
+using state_json::member;
+using state_json::read_u64;
 
 namespace {
-[[noreturn]] void fail(const std::string& path, const std::string& what) {
-    throw std::invalid_argument(path + ": " + what);
-}
-
-const json& member(const json& object, const char* key, const std::string& path) {
-    if (!object.is_object()) fail(path, "expected an object");
-    auto it = object.find(key);
-    if (it == object.end()) fail(path, std::string("missing \"") + key + "\"");
-    return *it;
-}
-
-std::uint64_t read_u64(const json& value, const std::string& path) {
-    if (!value.is_number_unsigned()) fail(path, "expected a non-negative integer");
-    return value.get<std::uint64_t>();
-}
-
 double read_finite(const json& value, const std::string& path) {
     if (!value.is_number()) fail(path, "expected a number");
     const double v = value.get<double>();

@@ -1,0 +1,21 @@
+#include "state_json_read.hpp"
+
+#include <stdexcept>
+
+namespace morphogen::state_json {
+
+void fail(const std::string& path, const std::string& what) { throw std::invalid_argument(path + ": " + what); }
+
+const nlohmann::json& member(const nlohmann::json& object, const char* key, const std::string& path) {
+    if (!object.is_object()) fail(path, "expected an object");
+    auto it = object.find(key);
+    if (it == object.end()) fail(path, std::string("missing \"") + key + "\"");
+    return *it;
+}
+
+std::uint64_t read_u64(const nlohmann::json& value, const std::string& path) {
+    if (!value.is_number_unsigned()) fail(path, "expected a non-negative integer");
+    return value.get<std::uint64_t>();
+}
+
+}  // namespace morphogen::state_json
