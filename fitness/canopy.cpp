@@ -70,6 +70,27 @@ struct Candidate {
     double x[3], y[3], z[3];
 };
 
+// Unnormalised barycentric weights of a point in a candidate's projection.
+struct Weights {
+    double a, b, c;
+    // The candidate's height at the point.
+    double z(const Candidate& t) const { return (a * t.z[0] + b * t.z[1] + c * t.z[2]) / (a + b + c); }
+};
+
+// Whether (px, py) lies in t's projection (a point on an edge counts as
+// inside); if so `w` gets its weights. Exact signs, so the canopy and its tops
+// agree on every cell.
+inline bool covers(const Candidate& t, double px, double py, Weights& w) {
+    const Orientation wa = orient2d(t.x[1], t.y[1], t.x[2], t.y[2], px, py);
+    if (wa.sign < 0) return false;
+    const Orientation wb = orient2d(t.x[2], t.y[2], t.x[0], t.y[0], px, py);
+    if (wb.sign < 0) return false;
+    const Orientation wc = orient2d(t.x[0], t.y[0], t.x[1], t.y[1], px, py);
+    if (wc.sign < 0) return false;
+    w = {wa.det, wb.det, wc.det};
+    return true;
+}
+
 struct Grid {
     std::int64_t i0 = 0, j0 = 0, width = 0, rows = 0;
     std::vector<std::uint8_t> marked;  // row-major, width x rows
@@ -104,16 +125,9 @@ void mark_triangle(const Candidate& t, double height, double cell, Grid& grid) {
         for (std::int64_t i = ia; i <= ib; ++i) {
             if (row[i - grid.i0]) continue;
             const double px = cell_centre(i, cell);
-            const Orientation wa = orient2d(t.x[1], t.y[1], t.x[2], t.y[2], px, py);
-            if (wa.sign < 0) continue;
-            const Orientation wb = orient2d(t.x[2], t.y[2], t.x[0], t.y[0], px, py);
-            if (wb.sign < 0) continue;
-            const Orientation wc = orient2d(t.x[0], t.y[0], t.x[1], t.y[1], px, py);
-            if (wc.sign < 0) continue;
-            if (!all_above) {
-                const double z = (wa.det * t.z[0] + wb.det * t.z[1] + wc.det * t.z[2]) / (wa.det + wb.det + wc.det);
-                if (!(z > height)) continue;
-            }
+            Weights w;
+            if (!covers(t, px, py, w)) continue;
+            if (!all_above && !(w.z(t) > height)) continue;
             row[i - grid.i0] = 1;
         }
     }
@@ -181,14 +195,9 @@ void top_triangle(const Candidate& t, double cell, const Grid& grid, std::vector
             double& top = row[i - grid.i0];
             if (top >= zmax) continue;  // this triangle cannot raise it
             const double px = cell_centre(i, cell);
-            const Orientation wa = orient2d(t.x[1], t.y[1], t.x[2], t.y[2], px, py);
-            if (wa.sign < 0) continue;
-            const Orientation wb = orient2d(t.x[2], t.y[2], t.x[0], t.y[0], px, py);
-            if (wb.sign < 0) continue;
-            const Orientation wc = orient2d(t.x[0], t.y[0], t.x[1], t.y[1], px, py);
-            if (wc.sign < 0) continue;
-            const double z = (wa.det * t.z[0] + wb.det * t.z[1] + wc.det * t.z[2]) / (wa.det + wb.det + wc.det);
-            top = std::max(top, std::clamp(z, zmin, zmax));
+            Weights w;
+            if (!covers(t, px, py, w)) continue;
+            top = std::max(top, std::clamp(w.z(t), zmin, zmax));
         }
     }
 }
