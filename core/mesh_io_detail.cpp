@@ -52,10 +52,9 @@ std::string header_comment(MeshView mesh) {
            std::to_string(mesh.faces.size()) + " triangles, Z up";
 }
 
-void append_text_body(std::string& out, MeshView mesh, std::string_view vertex_prefix, std::string_view face_prefix,
-                      long long first_index) {
+void append_vertex_lines(std::string& out, MeshView mesh, std::string_view prefix) {
     for (const Vec3& p : mesh.positions) {
-        out += vertex_prefix;
+        out += prefix;
         append_double(out, p.x());
         out += ' ';
         append_double(out, p.y());
@@ -63,6 +62,11 @@ void append_text_body(std::string& out, MeshView mesh, std::string_view vertex_p
         append_double(out, p.z());
         out += '\n';
     }
+}
+
+void append_text_body(std::string& out, MeshView mesh, std::string_view vertex_prefix, std::string_view face_prefix,
+                      long long first_index) {
+    append_vertex_lines(out, mesh, vertex_prefix);
     for (const Face& f : mesh.faces) {
         out += face_prefix;
         for (int v : f) {

@@ -46,6 +46,8 @@ void append_le(std::string& out, T value) {
 
 std::string header_comment(MeshView mesh);
 
+// One line per vertex: "<prefix>x y z" with 17 significant digits.
+void append_vertex_lines(std::string& out, MeshView mesh, std::string_view prefix);
 // The text formats share their body: one line per vertex ("<prefix>x y z")
 // and one per face ("<prefix>i j k", indices from `first_index`).
 void append_text_body(std::string& out, MeshView mesh, std::string_view vertex_prefix, std::string_view face_prefix,

@@ -12,15 +12,7 @@ std::string obj_bytes(MeshView mesh) {
     std::string out;
     out.reserve(text_size_guess(mesh) + mesh.positions.size() * 32 + mesh.faces.size() * 24);
     out += "# " + header_comment(mesh) + "\n";
-    for (const Vec3& p : mesh.positions) {
-        out += "v ";
-        append_double(out, p.x());
-        out += ' ';
-        append_double(out, p.y());
-        out += ' ';
-        append_double(out, p.z());
-        out += '\n';
-    }
+    append_vertex_lines(out, mesh, "v ");
     for (const Vec3& n : stored_normals(mesh)) {
         out += "vn ";
         append_float(out, static_cast<float>(n.x()));
