@@ -110,4 +110,12 @@ void check_same_results(const fs::path& a, const fs::path& b) {
     CHECK(checkpoint_without_times(a) == checkpoint_without_times(b));
 }
 
+// Appending, not "'" + string: GCC 12 warns falsely (-Wrestrict).
+std::string q(const fs::path& p) {
+    std::string quoted(1, '\'');
+    quoted += p.string();
+    quoted += '\'';
+    return quoted;
+}
+
 }  // namespace morphogen::test

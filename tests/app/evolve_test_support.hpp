@@ -34,6 +34,9 @@ int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log, b
 int wait_for(int pid, bool* killed = nullptr);
 
 // A config small enough for a run to take milliseconds.
+// A path quoted for the shell.
+std::string q(const fs::path& p);
+
 std::string tiny_config(int generations, int population = 8, int batch = 3);
 
 // history.csv without its two timing columns.

@@ -14,13 +14,6 @@
 using namespace morphogen::test;
 
 namespace {
-// Quoted for the shell. (Appending, not "'" + string: GCC 12 warns falsely, -Wrestrict.)
-std::string q(const fs::path& p) {
-    std::string quoted(1, '\'');
-    quoted += p.string();
-    quoted += '\'';
-    return quoted;
-}
 std::string arg(const char* option, int value) {
     std::string text(option);
     text += ' ';

@@ -27,13 +27,6 @@ using namespace morphogen;
 using namespace morphogen::test;
 
 namespace {
-// Quoted for the shell.
-std::string q(const fs::path& p) {
-    std::string quoted(1, '\'');
-    quoted += p.string();
-    quoted += '\'';
-    return quoted;
-}
 
 // A run of 4 generations of 6 with every best exported: ~20 ms on a RAM disk.
 std::string fault_config() {
