@@ -19,5 +19,6 @@ void add_resume_command(CLI::App& root, CommandRunner& selected);
 void add_validate_command(CLI::App& root, CommandRunner& selected);
 void add_score_command(CLI::App& root, CommandRunner& selected);
 void add_archive_command(CLI::App& root, CommandRunner& selected);
+void add_report_command(CLI::App& root, CommandRunner& selected);
 
 }  // namespace morphogen

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     add_validate_command(app, selected);
     add_score_command(app, selected);
     add_archive_command(app, selected);
+    add_report_command(app, selected);
 
     try {
         app.parse(argc, argv);
