@@ -6,6 +6,7 @@
 #include "exit_codes.hpp"
 #include "stop_signals.hpp"
 #include "archive_csv.hpp"
+#include "report.hpp"
 #include "resource_options.hpp"
 
 #include <chrono>
@@ -19,7 +20,7 @@ struct EvolveOptions {
     std::string config, out;
     std::uint64_t seed = 0, generations = 0;
     int threads = 0;
-    bool force = false;
+    bool force = false, no_report = false;
     CLI::Option *seed_option = nullptr, *generations_option = nullptr, *threads_option = nullptr;
     ResourceOptions resources;
 };
@@ -69,7 +70,9 @@ int run_evolve(const EvolveOptions& o) {
         write_file_atomically(paths.archive, archive_csv(session.state.elites->archive));
     }
     save_checkpoint(paths.checkpoint, session.state);
-    return run_session(session, problem);
+    const int code = run_session(session, problem);
+    if (code == exit_code::ok && !o.no_report) report_at_end_of_run(paths.dir);
+    return code;
 }
 }  // namespace
 
@@ -82,6 +85,7 @@ void add_evolve_command(CLI::App& root, CommandRunner& selected) {
     options->generations_option = cmd->add_option("--generations", options->generations, "replaces run.generations");
     options->threads_option = cmd->add_option("--threads", options->threads, "replaces run.threads (0 = all cores)");
     cmd->add_flag("--force", options->force, "reuse a non-empty run directory (removes its morphogen files)");
+    cmd->add_flag("--no-report", options->no_report, "do not write RUN_DIR/report/ at the end (morphogen report)");
     add_resource_options(cmd, options->resources);
     cmd->callback([options, &selected] { selected = [options] { return run_evolve(*options); }; });
 }

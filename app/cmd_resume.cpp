@@ -9,6 +9,7 @@
 #include "exit_codes.hpp"
 #include "stop_signals.hpp"
 #include "archive_csv.hpp"
+#include "report.hpp"
 #include "resource_options.hpp"
 
 #include <filesystem>
@@ -23,6 +24,7 @@ struct ResumeOptions {
     std::string dir;
     std::uint64_t generations = 0;
     int threads = 0;
+    bool no_report = false;
     CLI::Option *generations_option = nullptr, *threads_option = nullptr;
     ResourceOptions resources;
 };
@@ -105,7 +107,9 @@ int run_resume(const ResumeOptions& o) {
     AppendFile lineage = AppendFile::resume(paths.lineage, state.lineage_bytes, state.lineage_hash);
     RunSession session{paths, config, std::move(state), std::move(history), std::move(lineage), std::move(log)};
     session.log.both->info("resuming {} after {} births", o.dir, session.state.births());
-    return run_session(session, problem);
+    const int code = run_session(session, problem);
+    if (code == exit_code::ok && !o.no_report) report_at_end_of_run(paths.dir);
+    return code;
 }
 }  // namespace
 
@@ -116,6 +120,7 @@ void add_resume_command(CLI::App& root, CommandRunner& selected) {
     options->generations_option =
         cmd->add_option("--generations", options->generations, "total generations to reach (replaces run.generations)");
     options->threads_option = cmd->add_option("--threads", options->threads, "worker threads (0 = all cores)");
+    cmd->add_flag("--no-report", options->no_report, "do not write RUN_DIR/report/ at the end (morphogen report)");
     add_resource_options(cmd, options->resources);
     cmd->callback([options, &selected] { selected = [options] { return run_resume(*options); }; });
 }

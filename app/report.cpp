@@ -334,17 +334,18 @@ ReportSummary write_report(const fs::path& run_dir, const fs::path& out_dir, con
     d["elites"] = nullptr;
     if (qd) {
         const Archive& archive = state.elites->archive;
-        std::vector<const Individual*> by_fitness;
-        for (const auto& [cell, elite] : archive.elites()) by_fitness.push_back(&elite);
+        std::vector<std::pair<std::uint64_t, const Individual*>> by_fitness;  // cell, elite
+        for (const auto& [cell, elite] : archive.elites()) by_fitness.emplace_back(cell, &elite);
         std::stable_sort(by_fitness.begin(), by_fitness.end(),
-                         [](const Individual* a, const Individual* b) { return a->fitness > b->fitness; });
-        std::set<std::uint64_t> grown_ids;
+                         [](const auto& a, const auto& b) { return a.second->fitness > b.second->fitness; });
         const std::size_t grow_count = std::min<std::size_t>(by_fitness.size(), r.options.max_elites);
         json ranges = json::array();
         for (const DescriptorRange& range : archive.ranges())
             ranges.push_back({{"name", range.name}, {"min", range.min}, {"max", range.max}, {"bins", range.bins}});
         json cells = json::array();
+        std::map<std::uint64_t, std::size_t> index;  // cell -> its entry in cells
         for (const auto& [cell, elite] : archive.elites()) {
+            index[cell] = cells.size();
             json c = {{"cell", cell}, {"id", elite.id}, {"fitness", elite.fitness}, {"descriptors", elite.descriptors},
                       {"script", nullptr}};
             if (archive.kind() == ArchiveKind::grid) c["bins"] = archive.bins_of(elite.descriptors);
@@ -353,14 +354,13 @@ ReportSummary write_report(const fs::path& run_dir, const fs::path& out_dir, con
         const GrowthProblem* p = grow_count > 0 ? growth() : nullptr;
         std::size_t grown = 0;
         for (std::size_t i = 0; p && i < grow_count; ++i) {
-            const Individual& elite = *by_fitness[i];
-            const std::uint64_t cell = *archive.cell_of(elite.descriptors);
+            const auto [cell, elite] = by_fitness[i];
             const std::string key = "cell_" + four_digits(cell);
-            const GrowthState state_grown = p->grow(elite.params);
+            const GrowthState elite_grown = p->grow(elite->params);
             write_out(r.out / "elites" / (key + ".js"),
-                      mesh_script(key, encode_mesh(state_grown.mesh.view(), MeshFormat::glb)));
-            for (json& c : cells)
-                if (c["cell"] == cell) c["script"] = "elites/" + key + ".js";
+                      mesh_script(key, encode_mesh(elite_grown.mesh.view(), MeshFormat::glb)));
+            cells[index.at(cell)]["script"] = "elites/" + key + ".js";
+            cells[index.at(cell)]["key"] = key;
             ++grown;
         }
         r.summary.elites = grown;
@@ -406,6 +406,18 @@ ReportSummary write_report(const fs::path& run_dir, const fs::path& out_dir, con
     r.summary.index = r.out / "index.html";
     write_out(r.summary.index, html);
     return r.summary;
+}
+
+bool report_at_end_of_run(const fs::path& run_dir) {
+    try {
+        const ReportSummary summary = write_report(run_dir, run_dir / "report", ReportOptions{});
+        std::cerr << "report: " << summary.index.string() << '\n';
+        return true;
+    } catch (const std::exception& e) {
+        std::cerr << "morphogen: the run is complete but its report failed: " << e.what()
+                  << "; write it with: morphogen report " << run_dir.string() << '\n';
+        return false;
+    }
 }
 
 }  // namespace morphogen

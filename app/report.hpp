@@ -19,7 +19,7 @@ struct ReportOptions {
     std::uint64_t max_elites = 64;  // MAP-Elites: the fittest elites grown for the viewer (0 = none)
     int sheet_count = 12;           // contact sheet: at most this many exported generations
     int thumb_size = 128;           // ancestry thumbnails, pixels
-    int animation_frames = 40;      // frames of the best genome's growth (0 = no animation)
+    int animation_frames = 50;      // frames of the best genome's growth, at most steps + 1 (0 = no animation)
 };
 
 struct ReportSummary {
@@ -37,6 +37,12 @@ struct ReportSummary {
 // bad exported mesh does not stop the report: it becomes a note.
 ReportSummary write_report(const std::filesystem::path& run_dir, const std::filesystem::path& out_dir,
                            const ReportOptions& options);
+
+// For `evolve` and `resume` at the end of a complete run: the report into
+// RUN_DIR/report with default options. A failure does not fail the run: it
+// is printed (with the command that writes the report again) and false
+// returned.
+bool report_at_end_of_run(const std::filesystem::path& run_dir);
 
 // RFC 4648 base64 (with padding), for embedding binary files in scripts.
 std::string base64(std::string_view bytes);

@@ -250,11 +250,23 @@
     (function loop() {
       requestAnimationFrame(loop);
       var dt = self.clock.getDelta();
-      if (self.mixer && self.playing) self.mixer.update(dt);
+      if (self.mixer && self.playing) {
+        self.mixer.update(dt);
+        self.hideScaledAway();
+      }
       self.controls.update();
       self.renderer.render(self.scene, self.camera);
     })();
   }
+  // Frames of a growth animation are hidden by scale 0 (STEP keys); three.js
+  // cannot invert a zero scale's normal matrix (a console warning each
+  // frame), so such nodes are made invisible instead of drawn.
+  Viewer.prototype.hideScaledAway = function () {
+    if (!this.content) return;
+    this.content.traverse(function (o) {
+      o.visible = o.scale.x !== 0 || o.scale.y !== 0 || o.scale.z !== 0;
+    });
+  };
   // Shows a GLB (ArrayBuffer); animations in it play in a loop. The camera
   // keeps its direction and is moved to frame the new mesh.
   Viewer.prototype.show = function (buffer) {
@@ -291,6 +303,7 @@
           gltf.animations.forEach(function (clip) { self.mixer.clipAction(clip).play(); });
           self.mixer.update(0);
         }
+        self.hideScaledAway();
         resolve(gltf);
       }, function (error) { reject(error instanceof Error ? error : new Error(String(error && error.message || error))); });
     });
@@ -496,10 +509,12 @@
     canvas.addEventListener('click', function (ev) {
       var c = at(ev);
       if (!c || !c.script) return;
-      showInViewer('cell_' + c.cell, c.script, 'elite of cell ' + c.cell + ', fitness ' + fmt(c.fitness, 6));
+      showInViewer(c.key, c.script, 'elite of cell ' + c.cell + ', fitness ' + fmt(c.fitness, 6));
       $('viewer-section').scrollIntoView({ behavior: 'smooth' });
     });
     status.heatmap = shapes.length;
+    var target = shapes.find(function (s) { return s.cell.script; });  // for the browser tests: a cell to click
+    if (target) status.heatmapTarget = { x: target.x + target.w / 2, y: target.y + target.h / 2, key: target.cell.key };
   }
 
   // ---------- contact sheet ----------
