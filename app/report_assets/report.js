@@ -88,7 +88,7 @@
 
   // A line chart of `series` ({name, color, values}) over xs, with axes,
   // a unit on y, a legend and the values of the nearest generation on hover.
-  function chart(title, unit, xs, series) {
+  function chart(title, unit, xs, series, fromZero) {
     var box = el('div', { 'class': 'plot' });
     box.appendChild(el('h3', {}, title));
     var W = 420, H = 240, dpr = window.devicePixelRatio || 1;
@@ -112,6 +112,7 @@
     var ys = [];
     series.forEach(function (s) { s.values.forEach(function (v) { if (v !== null && isFinite(v)) ys.push(v); }); });
     var xr = niceTicks(xs.length ? Math.min.apply(null, xs) : 0, xs.length ? Math.max.apply(null, xs) : 1, 6);
+    if (fromZero) ys.push(0, 1);  // counts and rates: the axis starts at 0
     var yr = niceTicks(ys.length ? Math.min.apply(null, ys) : 0, ys.length ? Math.max.apply(null, ys) : 1, 5);
     xr.ticks = xr.ticks.filter(function (t) { return Number.isInteger(t); });
     function px(x) { return L + (x - xr.lo) / (xr.hi - xr.lo) * (W - L - Rm); }
@@ -194,9 +195,9 @@
       { name: 'median', color: '#8250df', values: h.median },
       { name: 'worst', color: '#cf222e', values: h.worst }]);
     chart('Mean vertices', 'vertices', xs, [{ name: 'mean vertices', color: '#bf8700', values: h.mean_vertices }]);
-    chart('Invalid births', 'births per generation', xs, [{ name: 'invalid births', color: '#cf222e', values: h.invalid }]);
-    chart('Speed', 'births / s', xs, [{ name: 'births per second', color: '#0969da', values: h.births_per_s }]);
-    if (h.coverage) chart('Archive coverage', 'fraction of cells', xs, [{ name: 'coverage', color: '#1a7f37', values: h.coverage }]);
+    chart('Invalid births', 'births per generation', xs, [{ name: 'invalid births', color: '#cf222e', values: h.invalid }], true);
+    chart('Speed', 'births / s', xs, [{ name: 'births per second', color: '#0969da', values: h.births_per_s }], true);
+    if (h.coverage) chart('Archive coverage', 'fraction of cells', xs, [{ name: 'coverage', color: '#1a7f37', values: h.coverage }], true);
     if (h.qd_score) chart('QD score', 'sum of fitness − offset', xs, [{ name: 'QD score', color: '#8250df', values: h.qd_score }]);
   }
 
