@@ -116,7 +116,7 @@ std::string encode_growth_animation_glb(const GrowthFrames& frames, double secon
     // Refuse before building what could not be written (or read back).
     long double bytes = 0;
     for (const MeshArrays& mesh : frames.meshes) bytes += gltf::mesh_data_bytes(mesh.view());
-    bytes += 48.0L * 3 * n;  // scale keys: at most 3 per frame, 16 bytes each, in and out
+    bytes += (48.0L + 2048.0L) * n;  // per frame: 3 keys of 16 bytes, and its JSON (about 1.1 KB)
     if (bytes > kMaxMeshFileBytes)
         throw IoError(source + ": an animation of " + std::to_string(n) + " frames would hold " +
                       std::to_string(static_cast<long long>(bytes)) + " bytes, more than the limit of " +
