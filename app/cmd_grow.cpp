@@ -70,7 +70,7 @@ int run_grow(const GrowOptions& options) {
                 seconds);
     if (!options.animate.empty()) {
         write_growth_animation(options.animate, recorded, options.frame_seconds);
-        std::printf("%s: %d frames, %.2f s per frame\n", options.animate.c_str(), frames, options.frame_seconds);
+        std::printf("%s: %d frames, %g s per frame\n", options.animate.c_str(), frames, options.frame_seconds);
     }
     if (!options.frames_obj.empty()) {
         write_growth_frames_obj(options.frames_obj, recorded);
