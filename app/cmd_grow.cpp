@@ -1,15 +1,19 @@
 // `morphogen grow`: grow one genome and write its mesh.
 #include "commands.hpp"
+#include "errors.hpp"
 #include "experiment_config.hpp"
 #include "genome_io.hpp"
 #include "genome_source.hpp"
 #include "growth.hpp"
+#include "growth_animation.hpp"
 #include "mesh_io.hpp"
 #include "mesh_stats.hpp"
 #include "resource_options.hpp"
 
+#include <cctype>
 #include <chrono>
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <optional>
 
@@ -24,6 +28,10 @@ struct GrowOptions {
     std::optional<int> steps;
     std::string output;
     std::string save_genome;
+    std::string animate;     // --animate OUT.glb
+    std::string frames_obj;  // --frames-obj DIR
+    std::optional<int> frames;
+    double frame_seconds = kDefaultSecondsPerFrame;
     MeshWriteOptions mesh_options;
     ResourceOptions resources;
 };
@@ -34,6 +42,12 @@ int run_grow(const GrowOptions& options) {
     check_resource_limits(config, Workload{.scores = false, .writers = 1}, options.resources.limits(),
                           options.config.empty() ? "default config" : options.config);
     mesh_format_from_path(options.output);  // refuse an unknown extension before growing
+    const bool animating = !options.animate.empty() || !options.frames_obj.empty();
+    const int frames = options.frames.value_or(default_animation_frames(config.growth.steps));
+    if (animating) {
+        const std::string problem = animation_frames_problem(frames, config.growth.steps);
+        if (!problem.empty()) throw ConfigError("--frames " + std::to_string(frames) + ": " + problem);
+    }
     const std::vector<int> layers = config.network.layers();
     const Genome genome = options.random_seed ? random_genome(layers, config.evolution.init_range, *options.random_seed)
                                               : load_genome_for(layers, options.genome);
@@ -42,7 +56,10 @@ int run_grow(const GrowOptions& options) {
 
     const auto start = std::chrono::steady_clock::now();
     GrowthWorkspace workspace;
-    const GrowthState state = Grower(network, config.growth).grow(seed, workspace);
+    const Grower grower(network, config.growth);
+    GrowthFrames recorded;
+    const GrowthState state = animating ? grow_with_frames(grower, seed, config.growth.steps, frames, workspace, recorded)
+                                        : grower.grow(seed, workspace);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     write_mesh(state.mesh.view(), options.output, options.mesh_options);
@@ -51,6 +68,15 @@ int run_grow(const GrowOptions& options) {
     std::printf("%s: %d vertices, %d faces, height %.3f, width %.3f, %d steps in %.3f s\n", options.output.c_str(),
                 state.mesh.num_vertices(), state.mesh.num_faces(), stats.height, stats.width, state.steps_done,
                 seconds);
+    if (!options.animate.empty()) {
+        write_growth_animation(options.animate, recorded, options.frame_seconds);
+        std::printf("%s: %d frames, %g s per frame\n", options.animate.c_str(), frames, options.frame_seconds);
+    }
+    if (!options.frames_obj.empty()) {
+        write_growth_frames_obj(options.frames_obj, recorded);
+        std::printf("%s: %d frames, frame_0000.obj to frame_%04d.obj\n", options.frames_obj.c_str(), frames,
+                    frames - 1);
+    }
     return 0;
 }
 
@@ -66,13 +92,35 @@ void add_grow_command(CLI::App& root, CommandRunner& selected) {
     random->excludes(genome);
     cmd->add_option("--steps", options->steps, "Override growth.steps")->check(CLI::Range(0, 1'000'000));
     cmd->add_option("-o,--output", options->output, "Output mesh (.obj .ply .off .stl .glb)")->required();
+    auto* animate = cmd->add_option("--animate", options->animate,
+                                    "Also write the growth as an animated glTF (.glb), one node per frame")
+                        ->check([](const std::string& path) {
+                            std::string ext = std::filesystem::path(path).extension().string();
+                            for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+                            return ext == ".glb" ? std::string() : "must name a .glb file (binary glTF)";
+                        });
+    auto* frames_obj = cmd->add_option("--frames-obj", options->frames_obj,
+                                       "Also write the growth's frames as DIR/frame_NNNN.obj");
+    auto* frames = cmd->add_option("--frames", options->frames,
+                                   "Frames of --animate/--frames-obj: the seed, evenly spaced steps, the final mesh "
+                                   "(default: 50, at most steps + 1)")
+                       ->check(CLI::Range(1, kMaxAnimationFrames));
+    auto* frame_seconds = cmd->add_option("--frame-seconds", options->frame_seconds,
+                                          "Seconds each --animate frame shows (default 0.1)");
     cmd->add_option("--save-genome", options->save_genome, "Also write the genome as JSON");
     cmd->add_flag("--ply-double", options->mesh_options.ply_double,
                   "PLY output: 64-bit coordinates and normals (exact) instead of float32 (what WebGL viewers draw)");
     add_resource_options(cmd, options->resources);
-    cmd->callback([options, random, genome, &selected] {
+    cmd->callback([options, random, genome, animate, frames_obj, frames, frame_seconds, &selected] {
         if (random->count() + genome->count() != 1)
             throw CLI::RequiredError("grow needs one of --random SEED or --genome FILE");
+        if (frames->count() > 0 && animate->count() + frames_obj->count() == 0)
+            throw CLI::ValidationError("--frames", "needs --animate or --frames-obj");
+        if (frame_seconds->count() > 0 && animate->count() == 0)
+            throw CLI::ValidationError("--frame-seconds", "needs --animate");
+        // Here, not CLI::Range: a range check lets NaN through.
+        if (!(options->frame_seconds >= kMinSecondsPerFrame && options->frame_seconds <= kMaxSecondsPerFrame))
+            throw CLI::ValidationError("--frame-seconds", "must be between 0.001 and 60");
         selected = [options] { return run_grow(*options); };
     });
 }
