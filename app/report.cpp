@@ -168,6 +168,10 @@ ReportSummary write_report(const fs::path& run_dir, const fs::path& out_dir, con
     remove_old_files(r.out / "meshes", "gen_", ".js");
     remove_old_files(r.out / "thumbs", "gen_", ".png");
     remove_old_files(r.out / "elites", "cell_", ".js");
+    for (const char* name : {"best.js", "growth.js", "growth.glb", "contact.png"}) {
+        std::error_code ec;
+        fs::remove(r.out / name, ec);  // written again below if there is one
+    }
 
     json& d = r.data;
     const bool qd = config.algorithm == Algorithm::map_elites;
@@ -291,12 +295,12 @@ ReportSummary write_report(const fs::path& run_dir, const fs::path& out_dir, con
         }
         // the growth animation of the best genome
         if (r.options.animation_frames > 0 && growth()) {
-            const fs::path glb = r.out / "growth.glb";
+            int frames = r.options.animation_frames;
             std::string why;
-            if (write_report_animation(config, Genome{config.network.layers(), best->params}, r.options.animation_frames,
-                                       glb, why)) {
-                write_out(r.out / "growth.js", mesh_script("growth", read_file_bytes(glb)));
-                d["animation"] = {{"script", "growth.js"}, {"file", "growth.glb"}, {"frames", r.options.animation_frames}};
+            if (const auto glb = report_animation_glb(config, Genome{config.network.layers(), best->params}, frames, why)) {
+                write_out(r.out / "growth.glb", *glb);
+                write_out(r.out / "growth.js", mesh_script("growth", *glb));
+                d["animation"] = {{"script", "growth.js"}, {"file", "growth.glb"}, {"frames", frames}};
                 r.summary.animation = true;
             } else {
                 r.note(why);

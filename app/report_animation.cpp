@@ -1,14 +1,20 @@
 #include "report_animation.hpp"
 
+#include "growth_animation.hpp"
+
+#include <algorithm>
+
 namespace morphogen {
 
-bool write_report_animation(const ExperimentConfig& /*config*/, const Genome& /*genome*/, int /*frames*/,
-                            const std::filesystem::path& /*path*/, std::string& why) {
-    // LEAD: once app/growth_animation.hpp (branch anim) is merged, replace this body with
-    //   write_growth_animation(path, record_growth_frames(config, genome, frames), 0.1);
-    //   return true;
-    why = "growth animation: this build has no animated glTF writer yet (grow --animate)";
-    return false;
+std::optional<std::string> report_animation_glb(const ExperimentConfig& config, const Genome& genome, int& frames,
+                                                std::string& why) {
+    frames = std::min(frames, config.growth.steps + 1);
+    if (const std::string problem = animation_frames_problem(frames, config.growth.steps); !problem.empty()) {
+        why = "growth animation: " + problem;
+        return std::nullopt;
+    }
+    return encode_growth_animation_glb(record_growth_frames(config, genome, frames), kDefaultSecondsPerFrame,
+                                       "the growth animation");
 }
 
 }  // namespace morphogen

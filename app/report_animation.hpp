@@ -1,19 +1,18 @@
 #pragma once
-// The one place the report asks for the growth animation of a genome (an
-// animated glTF: one node per frame, STEP scale keys; growth_animation.hpp).
+// The report's growth animation of a genome: the animated glTF of
+// growth_animation.hpp (one node per frame, STEP scale keys), as bytes.
 #include "experiment_config.hpp"
 #include "network.hpp"
 
-#include <filesystem>
 #include <optional>
 #include <string>
 
 namespace morphogen {
 
-// Writes the animated GLB of `genome`'s growth in `frames` frames to `path`
-// and returns true, or returns false with `why` set when this build cannot.
-// Throws what growth and writing throw.
-bool write_report_animation(const ExperimentConfig& config, const Genome& genome, int frames,
-                            const std::filesystem::path& path, std::string& why);
+// The GLB of `genome`'s growth in min(frames, growth.steps + 1) frames
+// (`frames` is set to the count used), or none with `why` set when no
+// animation can be made of it. Throws what growth and encoding throw.
+std::optional<std::string> report_animation_glb(const ExperimentConfig& config, const Genome& genome, int& frames,
+                                                std::string& why);
 
 }  // namespace morphogen

@@ -254,6 +254,7 @@
       if (self.mixer && self.playing) {
         self.mixer.update(dt);
         self.hideScaledAway();
+        if (self.onTime) self.onTime(self.mixer.time);
       }
       self.controls.update();
       self.renderer.render(self.scene, self.camera);
@@ -370,6 +371,7 @@
       return;
     }
     var growth = new Viewer($('growth'));
+    growth.onTime = function (t) { status.growthTime = t; };
     $('play').addEventListener('click', function () {
       growth.playing = !growth.playing;
       $('play').textContent = growth.playing ? 'pause' : 'play';

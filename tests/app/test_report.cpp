@@ -99,6 +99,20 @@ TEST_CASE("report of a small GA run: history, meshes, ancestry, pictures, three.
         CHECK(line[i]["thumb"].is_null() == (g % 2 == 1 && g != 5));
     }
     CHECK(d["best"]["fitness"] == d["history"]["columns"]["best"].back());
+    // the growth of the best: tiny_config grows 8 steps, so 9 frames (seed .. final)
+    REQUIRE(d["animation"].is_object());
+    CHECK(d["animation"]["frames"] == 9);
+    const std::string glb = read_text(out / "growth.glb");
+    CHECK(glb.rfind("glTF", 0) == 0);
+    CHECK(read_text(out / "growth.js") == "morphogenMesh(\"growth\",\"" + base64(glb) + "\");\n");
+
+    // written again without the animation and the sheet: their old files go
+    const CliResult again = run_morphogen("report " + q(run) + " -o " + q(out) + " --frames 0 --sheet 0");
+    REQUIRE(again.code == 0);
+    CHECK(report_data(out)["animation"].is_null());
+    CHECK(report_data(out)["sheet"].is_null());
+    CHECK_FALSE(fs::exists(out / "growth.glb"));
+    CHECK_FALSE(fs::exists(out / "contact.png"));
 }
 
 TEST_CASE("evolve writes the report at the end of a run unless --no-report; resume too", "[app][report]") {

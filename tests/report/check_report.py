@@ -147,6 +147,12 @@ def main():
             print(f"growth canvas: {colours} colours, {covered:.1%} covered")
             if colours < 20 or covered < 0.005:
                 failures.append("the growth canvas looks blank")
+            start = browser.evaluate("window.morphogenStatus.growthTime || 0")
+            browser.pump(1.0)
+            later = browser.evaluate("window.morphogenStatus.growthTime || 0")
+            print(f"growth animation time: {start:.2f} s, a second later {later:.2f} s")
+            if not later > start:
+                failures.append("the growth animation does not advance")
         if args.expect_heatmap:
             if not state.get("heatmap"):
                 failures.append("no heatmap cells drawn")
