@@ -160,7 +160,8 @@ ReportSummary write_report(const fs::path& run_dir, const fs::path& out_dir, con
     const std::map<std::uint64_t, fs::path> meshes = exported_meshes(paths.best);
 
     std::vector<std::uint64_t> births;  // per history row, for generation_of
-    for (const auto& b : history.columns.at("births")) births.push_back(b ? static_cast<std::uint64_t>(*b) : 0);
+    for (const auto& b : history.columns.at("births"))  // (a hostile cell becomes 0, not undefined behaviour)
+        births.push_back(b && *b >= 0 && *b < 9.2e18 ? static_cast<std::uint64_t>(*b) : 0);
     const auto& best_column = history.columns.at("best");
 
     make_dir(r.out);

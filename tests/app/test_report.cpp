@@ -197,6 +197,31 @@ TEST_CASE("a MAP-Elites run: the archive's cells, the fittest elites grown for t
     CHECK(d["history"]["columns"].contains("coverage"));
 }
 
+TEST_CASE("a CVT archive: cells without bins, drawn at their descriptors", "[app][report]") {
+    TempDir tmp("report_cvt");
+    const fs::path run = make_run(tmp, R"({"network": {"outputs": 4, "hidden": [5]},
+ "growth": {"steps": 12, "max_vertices": 300},
+ "fitness": {"type": "canopy", "height": 1, "cell": 0.1},
+ "evolution": {"algorithm": "map_elites", "population": 12, "batch": 4, "mutation_rate": 0.2},
+ "descriptors": [{"measure": "height", "min": 0, "max": 3}, {"measure": "footprint", "min": 0, "max": 10},
+                 {"measure": "spread", "min": 0, "max": 3}],
+ "archive": {"type": "cvt", "cells": 16},
+ "run": {"seed": 3, "generations": 2, "export_every": 0}})");
+    const CliResult result = run_morphogen("report " + q(run));
+    INFO(result.output);
+    REQUIRE(result.code == 0);
+    const nlohmann::json e = report_data(run / "report")["elites"];
+    CHECK(e["kind"] == "cvt");
+    CHECK(e["total_cells"] == 16);
+    REQUIRE_FALSE(e["cells"].empty());
+    for (const auto& c : e["cells"]) {
+        CHECK_FALSE(c.contains("bins"));
+        CHECK(c["descriptors"].size() == 3);
+        CHECK(c["cell"] < 16);
+        CHECK_FALSE(c["script"].is_null());  // fewer elites than --elites: all grown
+    }
+}
+
 TEST_CASE("report refuses non-run and damaged directories with the documented codes", "[app][report]") {
     TempDir tmp("report_bad");
     SECTION("no such directory: 3") {
@@ -249,6 +274,15 @@ TEST_CASE("report refuses non-run and damaged directories with the documented co
         const CliResult r = run_morphogen("report " + q(run));
         CHECK(r.code == 3);
         CHECK_THAT(r.output, Catch::Contains("history.csv: line 5: best is \"abc\", not a finite number"));
+    }
+    SECTION("absurd numbers in a history are shown, not trusted") {
+        std::string text = read_text(run / "history.csv");
+        text += "3,-1e300,1,1,1,1,1,0,1,1\n4,1e300,1,1,1,1,1,0,1,1\n";
+        write_text(run / "history.csv", text);
+        const CliResult r = run_morphogen("report " + q(run));
+        INFO(r.output);
+        CHECK(r.code == 0);
+        CHECK(report_data(run / "report")["generations"] == 4);
     }
     SECTION("a history without its columns: 3") {
         write_text(run / "history.csv", "a,b\n1,2\n");

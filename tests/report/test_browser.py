@@ -112,6 +112,11 @@ def main():
         elite_report = make_run(exe, tmp, "elites", elites)
         failed += check(elite_report, "--expect-viewer", "shown", "--expect-heatmap") != 0
         failed += click_heatmap(chromium, elite_report) != 0
+
+        cvt = dict(elites, descriptors=[{"measure": "height", "min": 0, "max": 3},
+                                        {"measure": "footprint", "min": 0, "max": 10}],
+                   archive={"type": "cvt", "cells": 16})
+        failed += check(make_run(exe, tmp, "cvt", cvt), "--expect-viewer", "shown", "--expect-heatmap") != 0
     print("FAILED" if failed else "PASSED", f"({failed} failing)")
     return 1 if failed else 0
 
