@@ -116,6 +116,86 @@ struct Reporter {
     }
 };
 
+// The archive for the heatmap; the r.options.max_elites fittest elites grown
+// into elites/cell_NNNN.js for the viewer.
+template <typename Growth>
+json elites_json(Reporter& r, const Archive& archive, Growth& growth) {
+    std::vector<std::pair<std::uint64_t, const Individual*>> by_fitness;  // cell, elite
+    for (const auto& [cell, elite] : archive.elites()) by_fitness.emplace_back(cell, &elite);
+    std::stable_sort(by_fitness.begin(), by_fitness.end(),
+                     [](const auto& a, const auto& b) { return a.second->fitness > b.second->fitness; });
+    const std::size_t grow_count = std::min<std::size_t>(by_fitness.size(), r.options.max_elites);
+    json ranges = json::array();
+    for (const DescriptorRange& range : archive.ranges())
+        ranges.push_back({{"name", range.name}, {"min", range.min}, {"max", range.max}, {"bins", range.bins}});
+    json cells = json::array();
+    std::map<std::uint64_t, std::size_t> index;  // cell -> its entry in cells
+    for (const auto& [cell, elite] : archive.elites()) {
+        index[cell] = cells.size();
+        json c = {{"cell", cell}, {"id", elite.id}, {"fitness", elite.fitness}, {"descriptors", elite.descriptors},
+                  {"script", nullptr}};
+        if (archive.kind() == ArchiveKind::grid) c["bins"] = archive.bins_of(elite.descriptors);
+        cells.push_back(std::move(c));
+    }
+    const GrowthProblem* p = grow_count > 0 ? growth() : nullptr;
+    std::size_t grown = 0;
+    for (std::size_t i = 0; p && i < grow_count; ++i) {
+        const auto [cell, elite] = by_fitness[i];
+        const std::string key = "cell_" + four_digits(cell);
+        const GrowthState elite_grown = p->grow(elite->params);
+        write_out(r.out / "elites" / (key + ".js"),
+                  mesh_script(key, encode_mesh(elite_grown.mesh.view(), MeshFormat::glb)));
+        cells[index.at(cell)]["script"] = "elites/" + key + ".js";
+        cells[index.at(cell)]["key"] = key;
+        ++grown;
+    }
+    r.summary.elites = grown;
+    if (grown < by_fitness.size())
+        r.note("the viewer holds the " + std::to_string(grown) + " fittest of " + std::to_string(by_fitness.size()) +
+               " elites (report --elites N for more)");
+    return {{"kind", archive.kind() == ArchiveKind::grid ? "grid" : "cvt"},
+            {"descriptors", std::move(ranges)},
+            {"cells", std::move(cells)},
+            {"total_cells", archive.cells()},
+            {"grown", grown}};
+}
+
+// three.js (Debian libjs-three) copied into lib/, so the report works
+// offline; false (and a note) where it is not installed.
+bool copy_three(Reporter& r, const fs::path& lib) {
+    const fs::path three = MORPHOGEN_THREE_DIR;
+    const std::vector<std::pair<fs::path, std::string>> files = {
+        {three / "three.min.js", "three.min.js"},
+        {three / "examples/js/loaders/GLTFLoader.js", "GLTFLoader.js"},
+        {three / "examples/js/controls/OrbitControls.js", "OrbitControls.js"}};
+    for (const auto& [from, name] : files) {
+        if (!fs::is_regular_file(from)) {
+            r.note("no 3-D viewer: " + from.string() + " is missing (install Debian's libjs-three)");
+            return false;
+        }
+        std::error_code ec;
+        fs::copy_file(from, lib / name, fs::copy_options::overwrite_existing, ec);
+        if (ec) throw IoError((lib / name).string() + ": cannot write: " + ec.message());
+    }
+    return true;
+}
+
+// data.js, the page and its script and style sheet.
+void write_page(Reporter& r, bool three) {
+    write_out(r.out / "data.js", "window.MORPHOGEN_REPORT = " + r.data.dump() + ";\n");
+    write_out(r.out / "report.js", report_asset_js());
+    write_out(r.out / "report.css", report_asset_css());
+    std::string html(report_asset_html());
+    const std::string marker = "<!--three-->";
+    const std::string scripts = three ? "<script src=\"lib/three.min.js\"></script>\n"
+                                        "<script src=\"lib/GLTFLoader.js\"></script>\n"
+                                        "<script src=\"lib/OrbitControls.js\"></script>"
+                                      : "";
+    if (const auto at = html.find(marker); at != std::string::npos) html.replace(at, marker.size(), scripts);
+    r.summary.index = r.out / "index.html";
+    write_out(r.summary.index, html);
+}
+
 }  // namespace
 
 std::string base64(std::string_view bytes) {
@@ -335,81 +415,12 @@ ReportSummary write_report(const fs::path& run_dir, const fs::path& out_dir, con
         }
     }
 
-    // MAP-Elites: the archive, the fittest elites grown for the viewer
-    d["elites"] = nullptr;
-    if (qd) {
-        const Archive& archive = state.elites->archive;
-        std::vector<std::pair<std::uint64_t, const Individual*>> by_fitness;  // cell, elite
-        for (const auto& [cell, elite] : archive.elites()) by_fitness.emplace_back(cell, &elite);
-        std::stable_sort(by_fitness.begin(), by_fitness.end(),
-                         [](const auto& a, const auto& b) { return a.second->fitness > b.second->fitness; });
-        const std::size_t grow_count = std::min<std::size_t>(by_fitness.size(), r.options.max_elites);
-        json ranges = json::array();
-        for (const DescriptorRange& range : archive.ranges())
-            ranges.push_back({{"name", range.name}, {"min", range.min}, {"max", range.max}, {"bins", range.bins}});
-        json cells = json::array();
-        std::map<std::uint64_t, std::size_t> index;  // cell -> its entry in cells
-        for (const auto& [cell, elite] : archive.elites()) {
-            index[cell] = cells.size();
-            json c = {{"cell", cell}, {"id", elite.id}, {"fitness", elite.fitness}, {"descriptors", elite.descriptors},
-                      {"script", nullptr}};
-            if (archive.kind() == ArchiveKind::grid) c["bins"] = archive.bins_of(elite.descriptors);
-            cells.push_back(std::move(c));
-        }
-        const GrowthProblem* p = grow_count > 0 ? growth() : nullptr;
-        std::size_t grown = 0;
-        for (std::size_t i = 0; p && i < grow_count; ++i) {
-            const auto [cell, elite] = by_fitness[i];
-            const std::string key = "cell_" + four_digits(cell);
-            const GrowthState elite_grown = p->grow(elite->params);
-            write_out(r.out / "elites" / (key + ".js"),
-                      mesh_script(key, encode_mesh(elite_grown.mesh.view(), MeshFormat::glb)));
-            cells[index.at(cell)]["script"] = "elites/" + key + ".js";
-            cells[index.at(cell)]["key"] = key;
-            ++grown;
-        }
-        r.summary.elites = grown;
-        if (grown < by_fitness.size())
-            r.note("the viewer holds the " + std::to_string(grown) + " fittest of " + std::to_string(by_fitness.size()) +
-                   " elites (report --elites N for more)");
-        d["elites"] = {{"kind", archive.kind() == ArchiveKind::grid ? "grid" : "cvt"},
-                       {"descriptors", std::move(ranges)},
-                       {"cells", std::move(cells)},
-                       {"total_cells", archive.cells()},
-                       {"grown", grown}};
-    }
+    d["elites"] = qd ? elites_json(r, state.elites->archive, growth) : json();
 
-    // three.js (Debian libjs-three), copied so the report works offline
-    const fs::path three = MORPHOGEN_THREE_DIR;
-    const std::vector<std::pair<fs::path, std::string>> libs = {
-        {three / "three.min.js", "three.min.js"},
-        {three / "examples/js/loaders/GLTFLoader.js", "GLTFLoader.js"},
-        {three / "examples/js/controls/OrbitControls.js", "OrbitControls.js"}};
-    bool have_three = true;
-    for (const auto& [from, name] : libs) {
-        std::error_code ec;
-        if (!fs::is_regular_file(from) || !fs::copy_file(from, r.out / "lib" / name, fs::copy_options::overwrite_existing, ec)) {
-            if (fs::is_regular_file(from) && ec) throw IoError((r.out / "lib" / name).string() + ": cannot write: " + ec.message());
-            r.note("no 3-D viewer: " + from.string() + " is missing (install Debian's libjs-three)");
-            have_three = false;
-            break;
-        }
-    }
+    const bool have_three = copy_three(r, r.out / "lib");
     d["three"] = have_three;
     d["notes"] = r.summary.notes;
-
-    write_out(r.out / "data.js", "window.MORPHOGEN_REPORT = " + d.dump() + ";\n");
-    write_out(r.out / "report.js", report_asset_js());
-    write_out(r.out / "report.css", report_asset_css());
-    std::string html(report_asset_html());
-    const std::string marker = "<!--three-->";
-    const std::string scripts = have_three ? "<script src=\"lib/three.min.js\"></script>\n"
-                                             "<script src=\"lib/GLTFLoader.js\"></script>\n"
-                                             "<script src=\"lib/OrbitControls.js\"></script>"
-                                           : "";
-    if (const auto at = html.find(marker); at != std::string::npos) html.replace(at, marker.size(), scripts);
-    r.summary.index = r.out / "index.html";
-    write_out(r.summary.index, html);
+    write_page(r, have_three);
     return r.summary;
 }
 
