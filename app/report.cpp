@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cerrno>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <iostream>
@@ -163,7 +164,8 @@ json elites_json(Reporter& r, const Archive& archive, Growth& growth) {
 // three.js (Debian libjs-three) copied into lib/, so the report works
 // offline; false (and a note) where it is not installed.
 bool copy_three(Reporter& r, const fs::path& lib) {
-    const fs::path three = MORPHOGEN_THREE_DIR;
+    const char* elsewhere = std::getenv("MORPHOGEN_THREE_DIR");  // another copy of three.js r111
+    const fs::path three = elsewhere && *elsewhere ? elsewhere : MORPHOGEN_THREE_DIR;
     const std::vector<std::pair<fs::path, std::string>> files = {
         {three / "three.min.js", "three.min.js"},
         {three / "examples/js/loaders/GLTFLoader.js", "GLTFLoader.js"},

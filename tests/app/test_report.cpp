@@ -11,6 +11,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cstdlib>
 #include <map>
 #include <string>
 
@@ -113,6 +114,20 @@ TEST_CASE("report of a small GA run: history, meshes, ancestry, pictures, three.
     CHECK(report_data(out)["sheet"].is_null());
     CHECK_FALSE(fs::exists(out / "growth.glb"));
     CHECK_FALSE(fs::exists(out / "contact.png"));
+}
+
+TEST_CASE("without three.js the report has no viewer, says why, and loads nothing missing", "[app][report]") {
+    TempDir tmp("report_nothree");
+    const fs::path run = make_run(tmp, tiny_config(1));
+    ::setenv("MORPHOGEN_THREE_DIR", (tmp.path / "no-three").c_str(), 1);
+    const CliResult result = run_morphogen("report " + q(run));
+    ::unsetenv("MORPHOGEN_THREE_DIR");
+    INFO(result.output);
+    REQUIRE(result.code == 0);
+    CHECK_THAT(result.output, Catch::Contains("no 3-D viewer: " + (tmp.path / "no-three/three.min.js").string() +
+                                              " is missing (install Debian's libjs-three)"));
+    CHECK(report_data(run / "report")["three"] == false);
+    CHECK(read_text(run / "report/index.html").find("three.min.js") == std::string::npos);
 }
 
 TEST_CASE("evolve writes the report at the end of a run unless --no-report; resume too", "[app][report]") {

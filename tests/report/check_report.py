@@ -166,7 +166,7 @@ def main():
     for f in failures:
         print("FAIL:", f)
     if not failures:
-        print("OK: report loads without errors; plots and a non-blank viewer present")
+        print(f"OK: no console errors or failed loads; plots; viewer {args.expect_viewer}")
     return 1 if failures else 0
 
 

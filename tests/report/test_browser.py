@@ -102,6 +102,10 @@ def main():
         report = make_run(exe, tmp, "ga", CONFIG)
         failed += check(report, "--expect-viewer", "shown", "--expect-growth", "playing") != 0
 
+        os.environ["MORPHOGEN_THREE_DIR"] = os.path.join(tmp, "no-three")  # three.js not installed
+        failed += check(make_run(exe, tmp, "nothree", CONFIG), "--expect-viewer", "none", "--expect-growth", "none") != 0
+        del os.environ["MORPHOGEN_THREE_DIR"]
+
         no_meshes = dict(CONFIG, run=dict(CONFIG["run"], export_every=0))
         failed += check(make_run(exe, tmp, "nomesh", no_meshes), "--expect-viewer", "shown") != 0
 
