@@ -37,28 +37,43 @@ json content_of(const RunState& s, GenomeBlobWriter* genomes) {
     return content;
 }
 
+// FNV-1a 64 of the content's dump, continued over the binary part word by
+// word (Fnv1a64::update_words; its length is a multiple of 8).
 std::string content_hash(const std::string& dumped_content, std::string_view genomes) {
     Fnv1a64 h;
     h.update(dumped_content);
-    h.update(genomes);
+    h.update_words(genomes);
     return h.hex();
 }
 
-json format2_header(json content, const std::string& hash, std::uint64_t count, std::uint64_t dimension) {
-    return json{{"format", format_name},
-                {"version", 2},
-                {"genomes", {{"count", count}, {"dimension", dimension}, {"encoding", genome_encoding}}},
-                {"hash", hash},
-                {"content", std::move(content)}};
+// The header line of format 2 without its "\n": the document's canonical dump
+// (keys sorted), built around the content's dump so it is dumped only once.
+std::string format2_header(const std::string& dumped_content, std::string_view genomes, std::uint64_t count,
+                           std::uint64_t dimension) {
+    return "{\"content\":" + dumped_content + ",\"format\":\"" + format_name + "\",\"genomes\":{\"count\":" +
+           std::to_string(count) + ",\"dimension\":" + std::to_string(dimension) + ",\"encoding\":\"" +
+           genome_encoding + "\"},\"hash\":\"" + content_hash(dumped_content, genomes) + "\",\"version\":2}";
 }
 
-std::string sealed_format2(json content, std::string_view genomes, std::uint64_t count, std::uint64_t dimension) {
-    const std::string hash = content_hash(content.dump(), genomes);
-    std::string out = format2_header(std::move(content), hash, count, dimension).dump();
+std::string sealed_format2(const json& content, std::string_view genomes, std::uint64_t count,
+                           std::uint64_t dimension) {
+    std::string out = format2_header(content.dump(), genomes, count, dimension);
     out.reserve(out.size() + 1 + genomes.size());
     out += '\n';
     out.append(genomes);
     return out;
+}
+
+// Genomes a state holds (elites or population, and the best), for reserving.
+std::size_t genome_doubles(const RunState& s) {
+    if (s.elites) {
+        const auto& elites = s.elites->archive.elites();
+        const std::size_t D = s.elites->best ? s.elites->best->params.size() : 0;
+        return (elites.size() + 1) * D;
+    }
+    const std::size_t D = s.ga.best ? s.ga.best->params.size()
+                                    : (s.ga.population.empty() ? 0 : s.ga.population.front().params.size());
+    return (s.ga.population.size() + 1) * D;
 }
 
 // A verified envelope: the content as stored and, in format 2, the binary part
@@ -202,12 +217,19 @@ std::string checkpoint_bytes(const CheckpointParts& parts) {
 
 std::string checkpoint_bytes(const RunState& state) {
     GenomeBlobWriter genomes;
-    json content = content_of(state, &genomes);
-    return sealed_format2(std::move(content), genomes.bytes(), genomes.count(), genomes.dimension());
+    genomes.reserve(genome_doubles(state));
+    const json content = content_of(state, &genomes);
+    return sealed_format2(content, genomes.bytes(), genomes.count(), genomes.dimension());
 }
 
 void save_checkpoint(const std::filesystem::path& path, const RunState& state) {
-    write_file_atomically(path, checkpoint_bytes(state));
+    // The header and the genomes written as two parts: the genomes are never copied.
+    GenomeBlobWriter genomes;
+    genomes.reserve(genome_doubles(state));
+    const json content = content_of(state, &genomes);
+    const std::string header = format2_header(content.dump(), genomes.bytes(), genomes.count(), genomes.dimension()) + "\n";
+    const std::string_view parts[] = {header, genomes.bytes()};
+    write_file_atomically(path, parts);
 }
 
 RunState load_checkpoint(const std::filesystem::path& path) {

@@ -18,11 +18,12 @@ public:
     // Appends a genome and returns its index. Throws std::invalid_argument if
     // its length differs from the first genome's.
     std::uint64_t add(std::span<const double> params);
+    // Room for `doubles` parameters in all (saves regrowing a 150 MB buffer).
+    void reserve(std::size_t doubles) { bytes_.reserve(doubles * 8); }
     std::uint64_t count() const { return count_; }
     // Doubles per genome (0 while there is none).
     std::size_t dimension() const { return dimension_; }
     const std::string& bytes() const { return bytes_; }
-    std::string take_bytes() { return std::move(bytes_); }
 
 private:
     std::string bytes_;
