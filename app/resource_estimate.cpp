@@ -23,18 +23,17 @@ using nlohmann::json;
 // docs/limits.md) and rounded up.
 constexpr double base_bytes = 64.0 * (1 << 20);     // the executable, its libraries, the heap's own use
 constexpr double genome_overhead = 96;              // an Individual besides its parameters
-constexpr double checkpoint_text_per_param = 25;    // "-1.2345678901234567e-05," at most
-constexpr double checkpoint_tree_per_param = 16;    // one nlohmann::json number
-constexpr double checkpoint_text_per_genome = 200;  // id, parents, fitness, size, brackets
+constexpr double checkpoint_bytes_per_param = 8;    // format 2: genomes as raw doubles after the header
+constexpr double checkpoint_text_per_genome = 200;  // id, parents, fitness, size, genome index, brackets
 constexpr double checkpoint_tree_per_genome = 800;
 constexpr double checkpoint_text_per_row = 300;     // a history row
 constexpr double checkpoint_tree_per_row = 1200;
 constexpr double checkpoint_fixed = 64 * 1024;      // config, lineage, envelope
 constexpr double history_row_bytes = 128;           // a HistoryRow kept in the run state
-// While a checkpoint is written (and read back by resume) the content exists
-// as two JSON trees and three texts at once (dump for the hash, the envelope,
-// "\n" appended).
-constexpr double checkpoint_texts_alive = 3, checkpoint_trees_alive = 2;
+// While a checkpoint is written (and read back by resume) its genomes exist
+// once as bytes (the binary part, or the file read), its JSON header as two
+// texts (the content's dump and the header line) and two JSON trees.
+constexpr double checkpoint_texts_alive = 2, checkpoint_trees_alive = 2;
 // A vertex of a growing mesh: position, direction, faces, half-edges,
 // valence, outgoing edge (144 bytes) and 16 bytes per output (outputs and the
 // next step's); vectors grow by doubling, so up to twice that.
@@ -369,15 +368,14 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
                             e.genomes.held * (8 * D + genome_overhead)});
         const double kept = e.genomes.checkpointed;
         const double rows = static_cast<double>(config.run.generations) + 1;
-        e.checkpoint_bytes = kept * (D * checkpoint_text_per_param + checkpoint_text_per_genome) +
-                             rows * checkpoint_text_per_row + checkpoint_fixed;
-        const double tree = kept * (D * checkpoint_tree_per_param + checkpoint_tree_per_genome) +
-                            rows * checkpoint_tree_per_row + checkpoint_fixed;
+        const double header = kept * checkpoint_text_per_genome + rows * checkpoint_text_per_row + checkpoint_fixed;
+        e.checkpoint_bytes = kept * D * checkpoint_bytes_per_param + header;
+        const double tree = kept * checkpoint_tree_per_genome + rows * checkpoint_tree_per_row + checkpoint_fixed;
         e.memory.push_back({"writing or reading a checkpoint of up to " + format_bytes(e.checkpoint_bytes) + " (" +
                                 group(kept) + " genomes, " + group(rows) + " history rows)",
                             genome_keys(elites ? std::vector<std::string>{cells_key, "run.generations"}
                                                : std::vector<std::string>{"evolution.population", "run.generations"}),
-                            checkpoint_texts_alive * e.checkpoint_bytes + checkpoint_trees_alive * tree +
+                            e.checkpoint_bytes + checkpoint_texts_alive * header + checkpoint_trees_alive * tree +
                                 rows * history_row_bytes});
     }
     return e;

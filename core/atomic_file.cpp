@@ -8,8 +8,6 @@
 
 #include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <sstream>
 
 namespace morphogen {
 
@@ -30,19 +28,21 @@ struct Fd {
 
 // Writes, fsyncs and closes the temporary file; returns 0 or the errno of
 // the first failure, with `step` saying which.
-int write_temporary(const std::filesystem::path& temp, std::string_view bytes, const char*& step) {
+int write_temporary(const std::filesystem::path& temp, std::span<const std::string_view> parts, const char*& step) {
     Fd out(::open(temp.c_str(), O_WRONLY | O_CREAT | O_TRUNC | O_CLOEXEC, 0644));
     step = "cannot create";
     if (out.fd < 0) return errno;
     step = "cannot write";
-    std::size_t written = 0;
-    while (written < bytes.size()) {
-        const ssize_t n = ::write(out.fd, bytes.data() + written, bytes.size() - written);
-        if (n < 0) {
-            if (errno == EINTR) continue;
-            return errno;
+    for (const std::string_view bytes : parts) {
+        std::size_t written = 0;
+        while (written < bytes.size()) {
+            const ssize_t n = ::write(out.fd, bytes.data() + written, bytes.size() - written);
+            if (n < 0) {
+                if (errno == EINTR) continue;
+                return errno;
+            }
+            written += static_cast<std::size_t>(n);
         }
-        written += static_cast<std::size_t>(n);
     }
     if (::fsync(out.fd) != 0) return errno;  // delayed allocation reports a full disk here
     const int fd = out.fd;
@@ -53,14 +53,15 @@ int write_temporary(const std::filesystem::path& temp, std::string_view bytes, c
 
 // For a target that is not a regular file (a device, a FIFO, a symlink to
 // one): written in place, since replacing it would be wrong.
-void write_in_place(const std::filesystem::path& path, std::string_view bytes) {
+void write_in_place(const std::filesystem::path& path, std::span<const std::string_view> parts) {
     Fd out(::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC));
     if (out.fd < 0) throw IoError(path.string() + ": cannot open for writing: " + why(errno));
-    for (std::size_t written = 0; written < bytes.size();) {
-        const ssize_t n = ::write(out.fd, bytes.data() + written, bytes.size() - written);
-        if (n < 0 && errno != EINTR) throw IoError(path.string() + ": cannot write: " + why(errno));
-        if (n > 0) written += static_cast<std::size_t>(n);
-    }
+    for (const std::string_view bytes : parts)
+        for (std::size_t written = 0; written < bytes.size();) {
+            const ssize_t n = ::write(out.fd, bytes.data() + written, bytes.size() - written);
+            if (n < 0 && errno != EINTR) throw IoError(path.string() + ": cannot write: " + why(errno));
+            if (n > 0) written += static_cast<std::size_t>(n);
+        }
 }
 }  // namespace
 
@@ -73,12 +74,16 @@ void sync_directory(const std::filesystem::path& dir) {
 }
 
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes) {
+    write_file_atomically(path, std::span<const std::string_view>(&bytes, 1));
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::span<const std::string_view> parts) {
     struct stat target {};
     if (::stat(path.c_str(), &target) == 0 && !S_ISREG(target.st_mode) && !S_ISDIR(target.st_mode))
-        return write_in_place(path, bytes);
+        return write_in_place(path, parts);
     const std::filesystem::path temp = temporary_path(path);
     const char* step = "";
-    int error = write_temporary(temp, bytes, step);
+    int error = write_temporary(temp, parts, step);
     if (error == 0 && ::rename(temp.c_str(), path.c_str()) != 0) {
         error = errno;
         step = "cannot replace";
@@ -93,12 +98,27 @@ void write_file_atomically(const std::filesystem::path& path, std::string_view b
 std::string read_file_bytes(const std::filesystem::path& path) {
     std::error_code ec;
     if (std::filesystem::is_directory(path, ec)) throw IoError(path.string() + ": cannot read: it is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw IoError(path.string() + ": cannot open for reading: " + why(errno));
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) throw IoError(path.string() + ": read failed: " + why(errno));
-    return buffer.str();
+    Fd in(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+    if (in.fd < 0) throw IoError(path.string() + ": cannot open for reading: " + why(errno));
+    // Read straight into the string (a checkpoint can be 150 MB): sized from
+    // fstat for a regular file, growing for anything else (a pipe, /dev/stdin).
+    struct stat info {};
+    std::size_t capacity = 1 << 16;
+    if (::fstat(in.fd, &info) == 0 && S_ISREG(info.st_mode)) capacity = static_cast<std::size_t>(info.st_size) + 1;
+    std::string bytes(capacity, '\0');
+    std::size_t size = 0;
+    while (true) {
+        if (size == bytes.size()) bytes.resize(2 * bytes.size());
+        const ssize_t n = ::read(in.fd, bytes.data() + size, bytes.size() - size);
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            throw IoError(path.string() + ": read failed: " + why(errno));
+        }
+        if (n == 0) break;
+        size += static_cast<std::size_t>(n);
+    }
+    bytes.resize(size);
+    return bytes;
 }
 
 }  // namespace morphogen

@@ -3,6 +3,7 @@
 // sees either the old file or the new one, never a mix, and a failed write
 // leaves nothing behind but the old file.
 #include <filesystem>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -18,6 +19,8 @@ std::filesystem::path temporary_path(const std::filesystem::path& path);
 // A `path` that exists and is not a regular file (a device such as
 // /dev/stdout, a FIFO) is written in place instead: it cannot be replaced.
 void write_file_atomically(const std::filesystem::path& path, std::string_view bytes);
+// The same for a file made of `parts` one after another (no copy to join them).
+void write_file_atomically(const std::filesystem::path& path, std::span<const std::string_view> parts);
 // fsync a directory (so a rename or new file in it is durable). Throws IoError.
 void sync_directory(const std::filesystem::path& dir);
 // The whole file as bytes. Throws IoError naming the file and the reason.

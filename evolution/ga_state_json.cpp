@@ -27,7 +27,8 @@ std::optional<std::uint64_t> read_parent(const json& value, const std::string& p
     return read_u64(value, path);
 }
 
-Individual read_individual(const json& object, std::size_t dimension, const std::string& path) {
+Individual read_individual(const json& object, std::size_t dimension, const std::string& path,
+                           GenomeBlobReader* genomes) {
     Individual ind;
     ind.id = read_u64(member(object, "id", path), path + ".id");
     ind.parent1 = read_parent(member(object, "parent1", path), path + ".parent1");
@@ -35,14 +36,22 @@ Individual read_individual(const json& object, std::size_t dimension, const std:
     const json& fitness = member(object, "fitness", path);
     ind.fitness = fitness.is_null() ? invalid_fitness : read_finite(fitness, path + ".fitness");
     ind.size = read_finite(member(object, "size", path), path + ".size");
-    const json& params = member(object, "params", path);
-    if (!params.is_array()) fail(path + ".params", "expected an array");
-    if (params.size() != dimension)
-        fail(path + ".params",
-             std::to_string(params.size()) + " parameters, the problem has " + std::to_string(dimension));
-    ind.params.reserve(dimension);
-    for (std::size_t i = 0; i < params.size(); ++i)
-        ind.params.push_back(read_finite(params[i], path + ".params[" + std::to_string(i) + "]"));
+    if (genomes) {
+        if (object.contains("params")) fail(path + ".params", "genomes are stored in the binary part");
+        if (genomes->dimension() != dimension)
+            fail(path + ".genome", std::to_string(genomes->dimension()) + " parameters per genome, the problem has " +
+                                       std::to_string(dimension));
+        ind.params = genomes->take(read_u64(member(object, "genome", path), path + ".genome"), path + ".genome");
+    } else {
+        const json& params = member(object, "params", path);
+        if (!params.is_array()) fail(path + ".params", "expected an array");
+        if (params.size() != dimension)
+            fail(path + ".params",
+                 std::to_string(params.size()) + " parameters, the problem has " + std::to_string(dimension));
+        ind.params.reserve(dimension);
+        for (std::size_t i = 0; i < params.size(); ++i)
+            ind.params.push_back(read_finite(params[i], path + ".params[" + std::to_string(i) + "]"));
+    }
     if ((ind.parent1 && *ind.parent1 >= ind.id) || (ind.parent2 && *ind.parent2 >= ind.id))
         fail(path, "a parent is not older than its child");
     if (ind.parent2 && !ind.parent1) fail(path, "parent2 without parent1");
@@ -50,33 +59,38 @@ Individual read_individual(const json& object, std::size_t dimension, const std:
 }
 }  // namespace
 
-Individual individual_from_json(const json& object, std::size_t dimension, const std::string& path) {
-    return read_individual(object, dimension, path);
+Individual individual_from_json(const json& object, std::size_t dimension, const std::string& path,
+                                GenomeBlobReader* genomes) {
+    return read_individual(object, dimension, path, genomes);
 }
 
-json individual_to_json(const Individual& ind) {
+json individual_to_json(const Individual& ind, GenomeBlobWriter* genomes) {
     json out = json::object();
     out["id"] = ind.id;
     out["parent1"] = ind.parent1 ? json(*ind.parent1) : json(nullptr);
     out["parent2"] = ind.parent2 ? json(*ind.parent2) : json(nullptr);
     out["fitness"] = ind.valid() ? json(ind.fitness) : json(nullptr);
     out["size"] = ind.size;
-    out["params"] = ind.params;
+    if (genomes)
+        out["genome"] = genomes->add(ind.params);
+    else
+        out["params"] = ind.params;
     return out;
 }
 
-json ga_state_to_json(const GaState& state) {
+json ga_state_to_json(const GaState& state, GenomeBlobWriter* genomes) {
     json out = json::object();
     out["births"] = state.births;
     out["invalid_in_generation"] = state.invalid_in_generation;
     json population = json::array();
-    for (const Individual& ind : state.population) population.push_back(individual_to_json(ind));
+    for (const Individual& ind : state.population) population.push_back(individual_to_json(ind, genomes));
     out["population"] = std::move(population);
-    out["best"] = state.best ? individual_to_json(*state.best) : json(nullptr);
+    out["best"] = state.best ? individual_to_json(*state.best, genomes) : json(nullptr);
     return out;
 }
 
-GaState ga_state_from_json(const json& document, const GaParams& params, std::size_t dimension) {
+GaState ga_state_from_json(const json& document, const GaParams& params, std::size_t dimension,
+                           GenomeBlobReader* genomes) {
     GaState state;
     const std::string root = "ga";
     state.births = read_u64(member(document, "births", root), "ga.births");
@@ -95,17 +109,18 @@ GaState ga_state_from_json(const json& document, const GaParams& params, std::si
     std::set<std::uint64_t> ids;
     for (std::size_t i = 0; i < population.size(); ++i) {
         const std::string path = "ga.population[" + std::to_string(i) + "]";
-        Individual ind = read_individual(population[i], dimension, path);
+        Individual ind = read_individual(population[i], dimension, path, genomes);
         if (ind.id >= state.births) fail(path + ".id", "not below the birth counter");
         if (!ids.insert(ind.id).second) fail(path + ".id", "duplicate id " + std::to_string(ind.id));
         state.population.push_back(std::move(ind));
     }
     const json& best = member(document, "best", root);
     if (!best.is_null()) {
-        state.best = read_individual(best, dimension, "ga.best");
+        state.best = read_individual(best, dimension, "ga.best", genomes);
         if (!state.best->valid()) fail("ga.best", "the best individual must be valid");
         if (state.best->id >= state.births) fail("ga.best.id", "not below the birth counter");
     }
+    if (genomes) genomes->check_all_taken("ga");
     return state;
 }
 

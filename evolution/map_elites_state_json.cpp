@@ -29,13 +29,13 @@ std::vector<double> read_numbers(const json& value, const std::string& path) {
 }
 }  // namespace
 
-json map_elites_state_to_json(const MapElitesState& state) {
+json map_elites_state_to_json(const MapElitesState& state, GenomeBlobWriter* genomes) {
     json archive = json::object();
     archive["type"] = state.archive.kind() == ArchiveKind::cvt ? "cvt" : "grid";
     if (state.archive.kind() == ArchiveKind::cvt) archive["centroids"] = state.archive.centroids();
     json elites = json::array();
     for (const auto& [cell, elite] : state.archive.elites()) {
-        json row = individual_to_json(elite);
+        json row = individual_to_json(elite, genomes);
         row["cell"] = cell;
         row["descriptors"] = elite.descriptors;
         elites.push_back(std::move(row));
@@ -45,7 +45,7 @@ json map_elites_state_to_json(const MapElitesState& state) {
     out["births"] = state.births;
     out["invalid_in_generation"] = state.invalid_in_generation;
     out["new_cells_in_generation"] = state.new_cells_in_generation;
-    out["best"] = state.best ? individual_to_json(*state.best) : json(nullptr);
+    out["best"] = state.best ? individual_to_json(*state.best, genomes) : json(nullptr);
     if (state.best) out["best"]["descriptors"] = state.best->descriptors;
     out["archive"] = std::move(archive);
     return out;
@@ -53,7 +53,8 @@ json map_elites_state_to_json(const MapElitesState& state) {
 
 MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind,
                                           const std::vector<DescriptorRange>& ranges, std::uint64_t cells,
-                                          std::uint64_t population, std::size_t dimension) {
+                                          std::uint64_t population, std::size_t dimension,
+                                          GenomeBlobReader* genomes) {
     const std::string root = "map_elites";
     const std::uint64_t births = read_u64(member(document, "births", root), root + ".births");
     const std::uint64_t invalid =
@@ -98,7 +99,7 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
     std::optional<std::uint64_t> previous;
     for (std::size_t i = 0; i < elites.size(); ++i) {
         const std::string path = root + ".archive.elites[" + std::to_string(i) + "]";
-        Individual elite = individual_from_json(elites[i], dimension, path);
+        Individual elite = individual_from_json(elites[i], dimension, path, genomes);
         const std::uint64_t cell = read_u64(member(elites[i], "cell", path), path + ".cell");
         elite.descriptors = read_numbers(member(elites[i], "descriptors", path), path + ".descriptors");
         if (elites[i].size() != 8) fail(path, "unexpected keys");
@@ -115,7 +116,7 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
     }
     const json& best = member(document, "best", root);
     if (!best.is_null()) {
-        state.best = individual_from_json(best, dimension, root + ".best");
+        state.best = individual_from_json(best, dimension, root + ".best", genomes);
         state.best->descriptors = read_numbers(member(best, "descriptors", root + ".best"), root + ".best.descriptors");
         if (!state.best->valid()) fail(root + ".best", "the best individual must be valid");
         if (state.best->id >= state.births) fail(root + ".best.id", "not below the birth counter");
@@ -126,6 +127,7 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
         fail(root + ".best", "null though the archive holds elites");
     }
     if (document.size() != 5) fail(root, "unexpected keys");
+    if (genomes) genomes->check_all_taken(root);
     return state;
 }
 

@@ -4,7 +4,9 @@
 //    "best": individual | null,
 //    "archive": {"type": "grid" | "cvt", "centroids": [...] (cvt only, row-major),
 //                "elites": [{"cell": c, "descriptors": [...], <individual>}, ...] (cell order)}}
-// The CVT centroids are stored so a resume never recomputes them.
+// The CVT centroids are stored so a resume never recomputes them. Genomes:
+// inline or in a blob, as in ga_state_json.hpp.
+#include "genome_blob.hpp"
 #include "map_elites.hpp"
 
 #include <nlohmann/json.hpp>
@@ -14,16 +16,18 @@
 
 namespace morphogen {
 
-nlohmann::json map_elites_state_to_json(const MapElitesState& state);
+nlohmann::json map_elites_state_to_json(const MapElitesState& state, GenomeBlobWriter* genomes = nullptr);
 
 // Reads and checks a state against the run's archive definition (`kind`,
 // `ranges`, `cells` for a CVT) and genome size: types, parameter counts,
 // centroids in [0,1] and as many as the config's cells, elites valid, in
 // increasing cell order, their descriptors mapping to their cell, ids unique
 // and below the birth counter, the best valid and at least as fit as every
-// elite. Throws std::invalid_argument naming the first defect ("map_elites.…").
+// elite; with `genomes`, every genome of the blob belongs to exactly one
+// individual. Throws std::invalid_argument naming the first defect ("map_elites.…").
 MapElitesState map_elites_state_from_json(const nlohmann::json& document, ArchiveKind kind,
                                           const std::vector<DescriptorRange>& ranges, std::uint64_t cells,
-                                          std::uint64_t population, std::size_t dimension);
+                                          std::uint64_t population, std::size_t dimension,
+                                          GenomeBlobReader* genomes = nullptr);
 
 }  // namespace morphogen

@@ -2,9 +2,11 @@
 // app/checkpoint.hpp load_checkpoint (as `resume` reads it).
 //
 // Nearly every mutation breaks the content hash, which stops the reader early.
-// So when the bytes are JSON holding a "content", that content is also sealed
-// again with a correct hash and read: what a hand edit with the hash
-// recomputed looks like, and the only way to reach the content checks.
+// So when the first line is JSON holding a "content", that content is also
+// sealed again with a correct hash (format 2 with the bytes after the line as
+// its genomes when the line announces them, else format 1) and read: what a
+// hand edit with the hash recomputed looks like, and the only way to reach
+// the content checks.
 #include "checkpoint.hpp"
 #include "fuzz_target.hpp"
 #include "path_readers.hpp"
@@ -47,15 +49,27 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     const std::string_view text = as_text(data, size);
     accepts([&] { (void)load_checkpoint_bytes(text); });
 
-    if (nesting_depth(text) > 100) return 0;
+    // Format 2 is a JSON header line and a binary part; format 1 one JSON line.
+    const std::size_t newline = text.find('\n');
+    const std::string_view header = text.substr(0, newline);
+    if (nesting_depth(header) > 100) return 0;
     nlohmann::json document;
     try {
-        document = nlohmann::json::parse(text);
+        document = nlohmann::json::parse(header);
     } catch (const nlohmann::json::exception&) {
         return 0;
     }
     if (!document.is_object() || !document.contains("content")) return 0;
-    const std::string sealed = checkpoint_text(document["content"]);
+    std::string sealed;
+    const nlohmann::json& genomes = document.contains("genomes") ? document["genomes"] : nlohmann::json();
+    if (genomes.is_object() && genomes.contains("count") && genomes["count"].is_number_unsigned() &&
+        genomes.contains("dimension") && genomes["dimension"].is_number_unsigned() && newline != std::string_view::npos) {
+        CheckpointParts parts{document["content"], std::string(text.substr(newline + 1)),
+                              genomes["count"].get<std::uint64_t>(), genomes["dimension"].get<std::uint64_t>()};
+        sealed = checkpoint_bytes(parts);
+    } else {
+        sealed = checkpoint_text(document["content"]);
+    }
     if (sealed != text) accepts([&] { (void)load_checkpoint_bytes(sealed); });
     return 0;
 }

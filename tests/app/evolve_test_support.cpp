@@ -1,5 +1,7 @@
 #include "app/evolve_test_support.hpp"
 
+#include "checkpoint.hpp"
+
 #include <catch2/catch.hpp>
 
 #include <fcntl.h>
@@ -91,7 +93,7 @@ std::string history_without_times(const fs::path& run_dir) {
 }
 
 nlohmann::json checkpoint_without_times(const fs::path& run_dir) {
-    nlohmann::json content = nlohmann::json::parse(read_text(run_dir / "checkpoint.json"))["content"];
+    nlohmann::json content = checkpoint_content(read_text(run_dir / "checkpoint.json"), run_dir.string());
     content.erase("elapsed_s");
     for (auto& row : content["history"]) {
         row.erase("births_per_s");

@@ -184,10 +184,10 @@ TEST_CASE("a damaged or mismatched checkpoint is refused and left as it was", "[
     expect_refusal(good.substr(0, good.size() / 2), "truncated");
     expect_refusal("", "empty");
     std::string flipped = good;
-    flipped[good.find("\"params\":[") + 12] ^= 1;  // a digit of a genome
+    flipped[good.find('\n') + 12] ^= 1;  // a bit of a genome in the binary part
     expect_refusal(flipped, "hash");
     std::string version = good;
-    version.replace(version.find("\"version\":1"), 11, "\"version\":2");
+    version.replace(version.find("\"version\":2"), 11, "\"version\":3");
     expect_refusal(version, "version");
 
     auto edited = nlohmann::json::parse(config);

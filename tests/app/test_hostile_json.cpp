@@ -156,7 +156,7 @@ TEST_CASE("resume refuses hostile checkpoints with exit 5 and leaves them byte-i
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"deep", with_elapsed(deep_nesting(100'000))},
         {"1e999", with_elapsed("1e999")},
-        {"nul", good + '\0' + "junk"},
+        {"nul", good.substr(0, good.find('\n')) + '\0' + "junk" + good.substr(good.find('\n'))},  // in the header line
         {"duplicate", R"({"format":"morphogen-checkpoint",)" + good.substr(1)},
     };
     const fs::path checkpoint = run / "checkpoint.json";
