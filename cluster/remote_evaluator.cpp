@@ -1,0 +1,88 @@
+#include "remote_evaluator.hpp"
+
+#include "protocol.hpp"
+#include "stop_signals.hpp"
+
+#include <algorithm>
+#include <iostream>
+#include <stdexcept>
+
+namespace morphogen::cluster {
+
+RemoteEvaluator::RemoteEvaluator(World& world, const ExperimentConfig& config, std::filesystem::path run_dir)
+    : world_(world), run_dir_(std::move(run_dir)), threads_(static_cast<std::size_t>(world.size()), 0) {
+    const std::string text = config.resolved.dump();
+    for (int w = 1; w < world_.size(); ++w) world_.send(w, tag_config, text);
+    std::string failures;
+    for (int answered = 1; answered < world_.size(); ++answered) {
+        const Message m = world_.receive(World::any_source, tag_ready);
+        if (m.bytes.size() == sizeof(std::int32_t))
+            threads_[static_cast<std::size_t>(m.source)] = decode_int(m.bytes);
+        else if (failures.empty())
+            failures = "worker rank " + std::to_string(m.source) + " " + m.bytes;
+    }
+    if (!failures.empty()) throw std::runtime_error(failures);
+}
+
+RemoteEvaluator::~RemoteEvaluator() {
+    if (!in_flight_) return;
+    std::cerr << "morphogen: rank 0 failed during a batch; ending every process (the run can be resumed from its "
+                 "last checkpoint: morphogen resume "
+              << run_dir_.string() << ")\n";
+    world_.abort(1);
+}
+
+std::string RemoteEvaluator::description() const {
+    int total = 0;
+    for (std::size_t w = 1; w < threads_.size(); ++w) total += threads_[w];
+    return std::to_string(threads_.size() - 1) + " worker processes (" + std::to_string(total) +
+           " threads) over MPI; rank 0 keeps the search state and the files";
+}
+
+std::vector<Evaluation> RemoteEvaluator::evaluate(const std::vector<std::vector<double>>& genomes) {
+    const std::size_t n = genomes.size();
+    const auto workers = static_cast<std::size_t>(world_.size() - 1);
+    std::vector<Evaluation> out(n);
+    std::vector<bool> done(n, false);
+    std::size_t next = 0, received = 0;
+    in_flight_ = true;
+
+    // A chunk is the worker's thread count, but no more than an even share of
+    // the batch, so small batches still reach every worker.
+    const std::size_t share = std::max<std::size_t>(1, n / workers);
+    auto hand_out = [&](int w) {
+        const std::size_t k = std::min({static_cast<std::size_t>(std::max(1, threads_[static_cast<std::size_t>(w)])),
+                                        share, n - next});
+        std::vector<WorkItem> items(k);
+        for (std::size_t j = 0; j < k; ++j) items[j] = WorkItem{next + j, genomes[next + j]};
+        next += k;
+        world_.send(w, tag_work, encode_work(items));
+    };
+    for (int w = 1; w < world_.size() && next < n; ++w) hand_out(w);
+
+    // A stop signal waits for the batch; if it came because a process died
+    // (mpirun then signals everyone), this is the last word from rank 0.
+    auto note_stop = [&] {
+        if (stop_noted_ || !StopSignals::requested()) return;
+        stop_noted_ = true;
+        std::cerr << "morphogen: signal " << StopSignals::signal_number()
+                  << ": finishing the current batch on the workers, then checkpointing; if a process died, the job "
+                     "ends now and the run can be resumed from its last checkpoint: morphogen resume "
+                  << run_dir_.string() << "\n";
+    };
+    while (received < n) {
+        const Message m = world_.receive(World::any_source, tag_result, note_stop);
+        for (ResultItem& item : decode_results(m.bytes)) {
+            if (item.index >= n || done[item.index])
+                throw std::runtime_error("worker rank " + std::to_string(m.source) + " returned an unknown genome");
+            done[item.index] = true;
+            out[item.index] = std::move(item.evaluation);
+            ++received;
+        }
+        if (next < n) hand_out(m.source);
+    }
+    in_flight_ = false;
+    return out;
+}
+
+}  // namespace morphogen::cluster
