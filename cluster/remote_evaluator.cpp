@@ -47,19 +47,6 @@ std::vector<Evaluation> RemoteEvaluator::evaluate(const std::vector<std::vector<
     std::size_t next = 0, received = 0;
     in_flight_ = true;
 
-    // A chunk is the worker's thread count, but no more than an even share of
-    // the batch, so small batches still reach every worker.
-    const std::size_t share = std::max<std::size_t>(1, n / workers);
-    auto hand_out = [&](int w) {
-        const std::size_t k = std::min({static_cast<std::size_t>(std::max(1, threads_[static_cast<std::size_t>(w)])),
-                                        share, n - next});
-        std::vector<WorkItem> items(k);
-        for (std::size_t j = 0; j < k; ++j) items[j] = WorkItem{next + j, genomes[next + j]};
-        next += k;
-        world_.send(w, tag_work, encode_work(items));
-    };
-    for (int w = 1; w < world_.size() && next < n; ++w) hand_out(w);
-
     // A stop signal waits for the batch; if it came because a process died
     // (mpirun then signals everyone), this is the last word from rank 0.
     auto note_stop = [&] {
@@ -70,6 +57,19 @@ std::vector<Evaluation> RemoteEvaluator::evaluate(const std::vector<std::vector<
                      "ends now and the run can be resumed from its last checkpoint: morphogen resume "
                   << run_dir_.string() << "\n";
     };
+    // A chunk is the worker's thread count, but no more than an even share of
+    // the batch, so small batches still reach every worker.
+    const std::size_t share = std::max<std::size_t>(1, n / workers);
+    auto hand_out = [&](int w) {
+        const std::size_t k = std::min({static_cast<std::size_t>(std::max(1, threads_[static_cast<std::size_t>(w)])),
+                                        share, n - next});
+        std::vector<WorkItem> items(k);
+        for (std::size_t j = 0; j < k; ++j) items[j] = WorkItem{next + j, genomes[next + j]};
+        next += k;
+        world_.send(w, tag_work, encode_work(items), note_stop);
+    };
+    for (int w = 1; w < world_.size() && next < n; ++w) hand_out(w);
+
     while (received < n) {
         const Message m = world_.receive(World::any_source, tag_result, note_stop);
         for (ResultItem& item : decode_results(m.bytes)) {

@@ -27,9 +27,10 @@ public:
     int rank() const { return rank_; }
     int size() const { return size_; }
 
-    // Blocking send (small messages go out at once; a large one waits until
-    // the receiver has posted its receive, which every receive loop does).
-    void send(int destination, int tag, const std::string& bytes);
+    // Returns once `bytes` have left (MPI_Isend, then polls with short sleeps,
+    // calling `idle` between polls: a send to a process that died never
+    // completes, and the caller must still see a stop signal meanwhile).
+    void send(int destination, int tag, const std::string& bytes, const std::function<void()>& idle = {});
     // The next message from `source` (any_source: anyone) with `tag` (any_tag:
     // any). Polls with short sleeps instead of MPI's busy wait, so a waiting
     // process leaves its core to the threads that compute; `idle` (if set) is

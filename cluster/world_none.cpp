@@ -9,7 +9,7 @@ namespace morphogen::cluster {
 
 World::World(int&, char**&) { throw std::runtime_error("this morphogen was built without MPI"); }
 World::~World() = default;
-void World::send(int, int, const std::string&) { throw std::logic_error("no MPI"); }
+void World::send(int, int, const std::string&, const std::function<void()>&) { throw std::logic_error("no MPI"); }
 Message World::receive(int, int, const std::function<void()>&) { throw std::logic_error("no MPI"); }
 void World::abort(int) { std::terminate(); }
 
