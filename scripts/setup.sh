@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev libcgal-dev libboost-dev libgmp-dev libmpfr-dev
   nlohmann-json3-dev libvalijson-dev libspdlog-dev libfmt-dev libcli11-dev
   libtinygltf-dev libstb-dev catch2
+  libopenmpi-dev openmpi-bin
 )
 
 missing=()
