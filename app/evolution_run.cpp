@@ -255,6 +255,7 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
         generation_first_birth = births;
     }
     progress.clear();
+    if (remote && !remote->summary().empty()) s.log.file_only->info("{}", remote->summary());
     if (ga.best())
         log->info("done: generation {} reached; best fitness {} (individual {})", config.run.generations,
                   format_number(ga.best()->fitness), ga.best()->id);

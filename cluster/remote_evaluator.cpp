@@ -4,10 +4,22 @@
 #include "stop_signals.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <ctime>
 #include <iostream>
 #include <stdexcept>
 
 namespace morphogen::cluster {
+
+namespace {
+double clock_s(clockid_t clock) {
+    timespec t{};
+    clock_gettime(clock, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
+double wall_s() { return clock_s(CLOCK_MONOTONIC); }
+double cpu_s() { return clock_s(CLOCK_PROCESS_CPUTIME_ID); }  // all of rank 0's threads
+}  // namespace
 
 RemoteEvaluator::RemoteEvaluator(World& world, const ExperimentConfig& config, std::filesystem::path run_dir)
     : world_(world), run_dir_(std::move(run_dir)), threads_(static_cast<std::size_t>(world.size()), 0) {
@@ -22,6 +34,8 @@ RemoteEvaluator::RemoteEvaluator(World& world, const ExperimentConfig& config, s
             failures = "worker rank " + std::to_string(m.source) + " " + m.bytes;
     }
     if (!failures.empty()) throw std::runtime_error(failures);
+    start_wall_ = wall_s();
+    start_cpu_ = cpu_s();
 }
 
 RemoteEvaluator::~RemoteEvaluator() {
@@ -35,8 +49,23 @@ RemoteEvaluator::~RemoteEvaluator() {
 std::string RemoteEvaluator::description() const {
     int total = 0;
     for (std::size_t w = 1; w < threads_.size(); ++w) total += threads_[w];
-    return std::to_string(threads_.size() - 1) + " worker processes (" + std::to_string(total) +
-           " threads) over MPI; rank 0 keeps the search state and the files";
+    const std::size_t workers = threads_.size() - 1;
+    return std::to_string(workers) + (workers == 1 ? " worker process (" : " worker processes (") +
+           std::to_string(total) + (total == 1 ? " thread" : " threads") +
+           ") over MPI; rank 0 keeps the search state and the files";
+}
+
+std::string RemoteEvaluator::summary() const {
+    if (genomes_ == 0) return {};
+    const double wall = wall_s() - start_wall_, cpu = cpu_s() - start_cpu_;
+    const double per_birth_ms = 1e3 / static_cast<double>(genomes_);
+    char text[256];
+    std::snprintf(text, sizeof text,
+                  "rank 0 over %llu births: %.3f ms CPU per birth of its own work, %.3f ms polling; waited for the "
+                  "workers %.1f %% of %.1f s",
+                  static_cast<unsigned long long>(genomes_), (cpu - wait_cpu_) * per_birth_ms,
+                  wait_cpu_ * per_birth_ms, wall > 0 ? 100.0 * wait_wall_ / wall : 0.0, wall);
+    return text;
 }
 
 std::vector<Evaluation> RemoteEvaluator::evaluate(const std::vector<std::vector<double>>& genomes) {
@@ -44,6 +73,7 @@ std::vector<Evaluation> RemoteEvaluator::evaluate(const std::vector<std::vector<
     const auto workers = static_cast<std::size_t>(world_.size() - 1);
     std::vector<Evaluation> out(n);
     std::vector<bool> done(n, false);
+    const double wall0 = wall_s(), cpu0 = cpu_s();
     std::size_t next = 0, received = 0;
     in_flight_ = true;
 
@@ -82,6 +112,9 @@ std::vector<Evaluation> RemoteEvaluator::evaluate(const std::vector<std::vector<
         if (next < n) hand_out(m.source);
     }
     in_flight_ = false;
+    wait_wall_ += wall_s() - wall0;
+    wait_cpu_ += cpu_s() - cpu0;
+    genomes_ += n;
     return out;
 }
 

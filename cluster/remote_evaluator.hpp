@@ -30,12 +30,19 @@ public:
 
     std::vector<Evaluation> evaluate(const std::vector<std::vector<double>>& genomes) override;
     std::string description() const override;
+    // Rank 0's own cost per birth: CPU time outside evaluate() (conceiving,
+    // inserting, writing rows and checkpoints), CPU time polling inside it,
+    // and the share of the wall time it waited for workers.
+    std::string summary() const override;
 
 private:
     World& world_;
     std::filesystem::path run_dir_;
     std::vector<int> threads_;  // per rank; threads_[0] unused
     bool in_flight_ = false;
+    double start_wall_ = 0, start_cpu_ = 0;  // when the session started
+    double wait_wall_ = 0, wait_cpu_ = 0;    // inside evaluate()
+    std::uint64_t genomes_ = 0;
     bool stop_noted_ = false;
 };
 

@@ -37,6 +37,8 @@ public:
     virtual std::vector<Evaluation> evaluate(const std::vector<std::vector<double>>& genomes) = 0;
     // Where the genomes go, for the run's log ("3 worker processes, 6 threads").
     virtual std::string description() const = 0;
+    // What it cost the calling process, for the run's log at the end ("" if nothing to say).
+    virtual std::string summary() const { return {}; }
 };
 
 // Births [first, first + count): conceive(birth) makes each child (it must

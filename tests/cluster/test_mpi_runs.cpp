@@ -150,7 +150,7 @@ TEST_CASE("a GA run over 1, 2, 3 and 5 processes gives the plain run's files", "
             INFO(r.output);
             REQUIRE(r.code == 0);
             check_same_dirs(tmp.path / "plain", dir);
-            if (n > 1) CHECK(read_text(dir / "log.txt").find(std::to_string(n - 1) + " worker processes") !=
+            if (n > 1) CHECK(read_text(dir / "log.txt").find(std::to_string(n - 1) + " worker process") !=
                              std::string::npos);
         }
     }
