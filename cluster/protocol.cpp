@@ -74,6 +74,30 @@ private:
 };
 }  // namespace
 
+std::string cpu_kind() {
+#if defined(__x86_64__)
+    return __builtin_cpu_supports("x86-64-v3") ? "x86-64-v3 (AVX2, FMA)" : "x86-64 (no AVX2/FMA)";
+#else
+    return "non-x86";
+#endif
+}
+
+std::string encode_ready(const Ready& ready) {
+    Writer w;
+    w.put<std::int32_t>(ready.threads);
+    w.put_text(ready.cpu);
+    return w.take();
+}
+
+Ready decode_ready(const std::string& bytes) {
+    Reader r(bytes);
+    Ready ready;
+    ready.threads = r.get<std::int32_t>();
+    ready.cpu = r.get_text();
+    r.finish();
+    return ready;
+}
+
 std::string encode_int(int value) {
     Writer w;
     w.put<std::int32_t>(value);

@@ -17,10 +17,11 @@ namespace morphogen::cluster {
 // MPI tags, one per message kind.
 enum Tag : int {
     tag_config = 1,  // 0 -> worker: the resolved config (JSON text); a session starts
-    tag_ready = 2,   // worker -> 0: its thread count (encode_int), or an error text if it cannot serve
+    tag_ready = 2,   // worker -> 0: its thread count and CPU kind (encode_ready)
     tag_work = 3,    // 0 -> worker: genomes to score (encode_work)
     tag_result = 4,  // worker -> 0: their evaluations (encode_results)
     tag_quit = 5,    // 0 -> worker: exit with this code (encode_int)
+    tag_failed = 6,  // worker -> 0: why it cannot build the problem (text)
 };
 
 // A malformed message (a bug or a mismatched executable, never user input).
@@ -37,6 +38,19 @@ struct ResultItem {
     std::uint64_t index = 0;
     Evaluation evaluation;
 };
+
+struct Ready {
+    int threads = 1;
+    std::string cpu;  // cpu_kind() of the worker
+};
+
+// Which of the kernels' builds (core/: x86-64-v3 with FMA, or baseline) this
+// CPU runs; processes that differ would round the network differently, so a
+// run's bytes would depend on where a genome was scored.
+std::string cpu_kind();
+
+std::string encode_ready(const Ready& ready);
+Ready decode_ready(const std::string& bytes);
 
 std::string encode_int(int value);
 int decode_int(const std::string& bytes);

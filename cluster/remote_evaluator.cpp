@@ -26,12 +26,24 @@ RemoteEvaluator::RemoteEvaluator(World& world, const ExperimentConfig& config, s
     const std::string text = config.resolved.dump();
     for (int w = 1; w < world_.size(); ++w) world_.send(w, tag_config, text);
     std::string failures;
+    const std::string cpu = cpu_kind();
     for (int answered = 1; answered < world_.size(); ++answered) {
-        const Message m = world_.receive(World::any_source, tag_ready);
-        if (m.bytes.size() == sizeof(std::int32_t))
-            threads_[static_cast<std::size_t>(m.source)] = decode_int(m.bytes);
-        else if (failures.empty())
-            failures = "worker rank " + std::to_string(m.source) + " " + m.bytes;
+        const Message m = world_.receive(World::any_source, World::any_tag);
+        std::string failure;
+        if (m.tag == tag_ready) {
+            const Ready ready = decode_ready(m.bytes);
+            threads_[static_cast<std::size_t>(m.source)] = ready.threads;
+            if (ready.cpu != cpu)
+                failure = "worker rank " + std::to_string(m.source) + " runs on a " + ready.cpu + " CPU, rank 0 on " +
+                          cpu + ": they round the network differently, so the run would depend on which process " +
+                          "scored which genome; use nodes of one CPU kind";
+        } else if (m.tag == tag_failed) {
+            failure = "worker rank " + std::to_string(m.source) + " cannot start: " + m.bytes;
+        } else {
+            throw ProtocolError("unexpected message tag " + std::to_string(m.tag) + " from rank " +
+                                std::to_string(m.source));
+        }
+        if (failures.empty()) failures = failure;
     }
     if (!failures.empty()) throw std::runtime_error(failures);
     start_wall_ = wall_s();

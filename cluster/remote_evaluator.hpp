@@ -22,7 +22,8 @@ namespace morphogen::cluster {
 class RemoteEvaluator : public BatchEvaluator {
 public:
     // Sends the resolved config to every worker and waits until each has
-    // built its problem; throws std::runtime_error naming a worker that cannot.
+    // built its problem; throws std::runtime_error naming a worker that cannot,
+    // or one whose CPU kind (cpu_kind) differs from rank 0's.
     RemoteEvaluator(World& world, const ExperimentConfig& config, std::filesystem::path run_dir);
     // A batch abandoned half way (an exception on rank 0) leaves messages in
     // flight, so the job is aborted rather than left to hang.

@@ -57,8 +57,10 @@ int serve(World& world) {
             return decode_int(m.bytes);
         case tag_config: {
             const std::string failure = start_session(serving, m.bytes);
-            // Never 4 bytes long, so it cannot pass for a thread count.
-            world.send(0, tag_ready, failure.empty() ? encode_int(serving.threads) : "cannot start: " + failure);
+            if (failure.empty())
+                world.send(0, tag_ready, encode_ready({serving.threads, cpu_kind()}));
+            else
+                world.send(0, tag_failed, failure);
             break;
         }
         case tag_work:

@@ -41,6 +41,10 @@ TEST_CASE("work and results survive encoding bit for bit", "[cluster][protocol]"
     CHECK_FALSE(back[1].evaluation.valid);
     CHECK(back[1].evaluation.error == invalid.error);
     CHECK(decode_int(encode_int(-130)) == -130);
+    const Ready ready = decode_ready(encode_ready({16, cpu_kind()}));
+    CHECK(ready.threads == 16);
+    CHECK(ready.cpu == cpu_kind());
+    CHECK_FALSE(ready.cpu.empty());
 }
 
 TEST_CASE("malformed messages are refused", "[cluster][protocol]") {
@@ -60,4 +64,5 @@ TEST_CASE("malformed messages are refused", "[cluster][protocol]") {
     CHECK_THROWS_AS(decode_work(huge), ProtocolError);
     CHECK_THROWS_AS(decode_results(huge), ProtocolError);
     CHECK_THROWS_AS(decode_int("abc"), ProtocolError);
+    CHECK_THROWS_AS(decode_ready(encode_int(4)), ProtocolError);
 }
