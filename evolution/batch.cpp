@@ -55,22 +55,15 @@ void take_evaluation(Individual& child, std::string& error, Evaluation&& e) {
     error = e.valid ? std::string() : std::move(e.error);
 }
 
-BredBatch breed_remotely(BatchEvaluator& remote, std::uint64_t first, std::size_t count, int threads,
+// Conceiving costs microseconds per child, so it runs on this thread: an
+// OpenMP region here would leave its threads spinning while the remote
+// evaluator waits (libgomp's idle threads spin before they sleep).
+BredBatch breed_remotely(BatchEvaluator& remote, std::uint64_t first, std::size_t count,
                          const std::function<Individual(std::uint64_t birth)>& conceive) {
     BredBatch out;
     out.children.resize(count);
     out.errors.resize(count);
-    std::exception_ptr failure;
-#pragma omp parallel for schedule(static) num_threads(threads)
-    for (std::size_t i = 0; i < count; ++i) {
-        try {
-            out.children[i] = conceive(first + i);
-        } catch (...) {
-#pragma omp critical(morphogen_batch_failure)
-            if (!failure) failure = std::current_exception();
-        }
-    }
-    if (failure) std::rethrow_exception(failure);
+    for (std::size_t i = 0; i < count; ++i) out.children[i] = conceive(first + i);
     std::vector<std::vector<double>> genomes(count);
     for (std::size_t i = 0; i < count; ++i) genomes[i] = out.children[i].params;
     std::vector<Evaluation> scored = remote.evaluate(genomes);
@@ -82,8 +75,8 @@ BredBatch breed_remotely(BatchEvaluator& remote, std::uint64_t first, std::size_
 
 BredBatch breed_batch(Problem& problem, std::uint64_t first, std::size_t count, int threads,
                       const std::function<Individual(std::uint64_t birth)>& conceive, BatchEvaluator* remote) {
+    if (remote != nullptr) return breed_remotely(*remote, first, count, conceive);
     threads = resolve_thread_count(threads);
-    if (remote != nullptr) return breed_remotely(*remote, first, count, threads, conceive);
     problem.prepare(threads);
     BredBatch out;
     out.children.resize(count);

@@ -47,8 +47,8 @@ public:
 // Calls problem.prepare(threads) first; threads <= 0 means OpenMP's default.
 // Failures outside evaluation (e.g. std::bad_alloc while conceiving) are
 // rethrown after the parallel region. With a `remote` evaluator the children
-// are conceived here (in parallel) and scored by it instead; the result is
-// the same bytes, since each child's score depends on its genome alone.
+// are conceived here (on the calling thread; `threads` is unused) and scored
+// by it instead: the same bytes, since a child's score depends on its genome alone.
 BredBatch breed_batch(Problem& problem, std::uint64_t first, std::size_t count, int threads,
                       const std::function<Individual(std::uint64_t birth)>& conceive,
                       BatchEvaluator* remote = nullptr);
