@@ -256,3 +256,25 @@ TEST_CASE("only evolve and resume run over several processes", "[cluster][mpi]")
     CHECK(r.code == 2);
     CHECK(r.output.find("only evolve and resume run over several processes") != std::string::npos);
 }
+
+TEST_CASE("a build without MPI started as several processes says so and exits 2", "[cluster][launch]") {
+    if (MORPHOGEN_HAVE_MPI) return;  // only a build without MPI can show it (an MPI build would start MPI)
+    TempDir tmp("nompi-launched");
+    const fs::path config = tmp.path / "c.json";
+    write_text(config, tiny_config(2));
+    for (const std::string launcher : {"OMPI_COMM_WORLD_SIZE=3 OMPI_COMM_WORLD_RANK=0", "SLURM_STEP_NUM_TASKS=2"}) {
+        CAPTURE(launcher);
+        const CliResult r = run_shell("env " + launcher + " " + MORPHOGEN_EXE + " evolve " + q(config) + " --out " +
+                                          q(tmp.path / "run"),
+                                      tmp.path / "log");
+        CHECK(r.code == 2);
+        CHECK(r.output.find("this build has no MPI") != std::string::npos);
+        CHECK_FALSE(fs::exists(tmp.path / "run"));
+    }
+    // Rank 1 stays silent (rank 0 speaks for the job), and one process is no job.
+    CHECK(run_shell("env OMPI_COMM_WORLD_SIZE=3 OMPI_COMM_WORLD_RANK=1 " + std::string(MORPHOGEN_EXE) + " --version",
+                    tmp.path / "log")
+              .output.empty());
+    CHECK(run_shell("env OMPI_COMM_WORLD_SIZE=1 " + std::string(MORPHOGEN_EXE) + " --version", tmp.path / "log").code ==
+          0);
+}
