@@ -13,7 +13,8 @@ public:
     }
     void put_doubles(const std::vector<double>& values) {
         put<std::uint64_t>(values.size());
-        out_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
+        if (!values.empty())
+            out_.append(reinterpret_cast<const char*>(values.data()), values.size() * sizeof(double));
     }
     void put_text(const std::string& text) {
         put<std::uint64_t>(text.size());
@@ -40,7 +41,7 @@ public:
         const auto n = get<std::uint64_t>();
         if (n > (bytes_.size() - at_) / sizeof(double)) fail();
         std::vector<double> values(n);
-        std::memcpy(values.data(), bytes_.data() + at_, n * sizeof(double));
+        if (n > 0) std::memcpy(values.data(), bytes_.data() + at_, n * sizeof(double));  // data() may be null
         at_ += n * sizeof(double);
         return values;
     }
