@@ -23,6 +23,8 @@
 namespace morphogen {
 
 namespace {
+RemoteEvaluatorFactory g_remote_factory;
+
 using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point start) {
@@ -57,8 +59,8 @@ public:
     std::uint64_t births() const { return ga_.state().births; }
     std::uint64_t completed_generations() const { return ga_.completed_generations(); }
     const std::optional<Individual>& best() const { return ga_.state().best; }
-    StepResult step(int threads) {
-        BatchOutcome out = ga_.step(threads);
+    StepResult step(int threads, BatchEvaluator* remote) {
+        BatchOutcome out = ga_.step(threads, remote);
         return {std::move(out.children), std::move(out.errors), out.ends_generation, out.generation_invalid, 0};
     }
     void fill(HistoryRow& row, const StepResult&) const {
@@ -100,8 +102,8 @@ public:
     std::uint64_t births() const { return me_.state().births; }
     std::uint64_t completed_generations() const { return me_.completed_generations(); }
     const std::optional<Individual>& best() const { return me_.state().best; }
-    StepResult step(int threads) {
-        EliteBatchOutcome out = me_.step(threads);
+    StepResult step(int threads, BatchEvaluator* remote) {
+        EliteBatchOutcome out = me_.step(threads, remote);
         return {std::move(out.children), std::move(out.errors), out.ends_generation, out.generation_invalid,
                 out.generation_new_cells};
     }
@@ -158,6 +160,8 @@ RunLoggers make_run_loggers(const RunPaths& paths) {
     return loggers;
 }
 
+void set_remote_evaluator_factory(RemoteEvaluatorFactory factory) { g_remote_factory = std::move(factory); }
+
 int resolve_threads(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
 namespace {
@@ -168,11 +172,13 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
     const std::uint64_t target_births = (config.run.generations + 1) * P;
     const int threads = resolve_threads(config.run.threads);
     auto& log = s.log.both;
+    const std::unique_ptr<BatchEvaluator> remote = g_remote_factory ? g_remote_factory(config, s.paths.dir) : nullptr;
 
     Progress progress(s.log.both, s.log.file_only, target_births, config.run.generations);
     log->info("run directory {}: population {}, generation {}/{} ({} births done), {} threads, seed {}",
               s.paths.dir.string(), P, ga.completed_generations(), config.run.generations, ga.births(),
               threads, config.run.seed);
+    if (remote) log->info("genomes are grown and scored by {}", remote->description());
 
     const auto session_start = Clock::now();
     const double elapsed_before = s.state.elapsed_s;
@@ -208,7 +214,7 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
                       StopSignals::signal_number(), ga.births(), s.paths.dir.string());
             return exit_code::interrupted;
         }
-        const StepResult out = ga.step(threads);
+        const StepResult out = ga.step(threads, remote.get());
         std::string rows;
         for (std::size_t i = 0; i < out.children.size(); ++i) {
             rows += format_lineage_row(out.children[i]);
@@ -249,6 +255,7 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
         generation_first_birth = births;
     }
     progress.clear();
+    if (remote && !remote->summary().empty()) s.log.file_only->info("{}", remote->summary());
     if (ga.best())
         log->info("done: generation {} reached; best fitness {} (individual {})", config.run.generations,
                   format_number(ga.best()->fitness), ga.best()->id);

@@ -6,6 +6,7 @@
 // the end). Rows written after the last checkpoint are cut off by a resume,
 // so the files always equal those of an uninterrupted run.
 #include "append_file.hpp"
+#include "batch.hpp"
 #include "checkpoint.hpp"
 #include "experiment_config.hpp"
 #include "growth_problem.hpp"
@@ -13,6 +14,8 @@
 
 #include <spdlog/logger.h>
 
+#include <filesystem>
+#include <functional>
 #include <memory>
 #include <string>
 
@@ -45,6 +48,14 @@ struct RunSession {
 // checkpoint) throws IoError naming it and the reason; the last checkpoint is
 // then intact and the run can be resumed.
 int run_session(RunSession& session, GrowthProblem& problem);
+
+// Where run_session has its batches scored when the process is one of several
+// (cluster/: other MPI processes): called once per session with the config
+// and the run directory; nullptr, or no factory (the default), scores them
+// here with OpenMP.
+using RemoteEvaluatorFactory =
+    std::function<std::unique_ptr<BatchEvaluator>(const ExperimentConfig&, const std::filesystem::path& run_dir)>;
+void set_remote_evaluator_factory(RemoteEvaluatorFactory factory);
 
 // A new MAP-Elites run's empty archive, for the first checkpoint: a CVT's
 // centroids are computed from run.seed here, once; later sessions read them

@@ -21,7 +21,7 @@ MapElites::MapElites(const MapElitesParams& params, std::uint64_t seed, Problem&
     blocks_ = check_blocks(problem_.blocks(), problem_.dimension());
 }
 
-EliteBatchOutcome MapElites::step(int threads) {
+EliteBatchOutcome MapElites::step(int threads, BatchEvaluator* remote) {
     const std::size_t count = batch_size(state_.births, population(), params_.batch);
     const std::size_t dimension = problem_.dimension();
     const BirthRules rules = this->rules();
@@ -33,7 +33,7 @@ EliteBatchOutcome MapElites::step(int threads) {
     }
     BredBatch bred = breed_batch(problem_, state_.births, count, threads, [&](std::uint64_t birth) {
         return conceive_birth(rules, blocks_, dimension, seed_, birth, pick);
-    });
+    }, remote);
 
     EliteBatchOutcome out;
     out.children = std::move(bred.children);

@@ -11,6 +11,7 @@
 // A birth after generation 0 while the archive is still empty (every earlier
 // child was invalid) is a random genome, as in generation 0.
 #include "archive.hpp"
+#include "batch.hpp"
 #include "individual.hpp"
 #include "operators.hpp"
 #include "problem.hpp"
@@ -60,7 +61,8 @@ public:
     // One batch with `threads` workers (<= 0: OpenMP's default). A child
     // whose evaluation throws, or gives a non-finite score or descriptor, or
     // a descriptor vector of the wrong length, is invalid and enters nowhere.
-    EliteBatchOutcome step(int threads);
+    // With `remote`, the batch is scored by it (batch.hpp), with the same result.
+    EliteBatchOutcome step(int threads, BatchEvaluator* remote = nullptr);
 
     const MapElitesState& state() const { return state_; }
     const MapElitesParams& params() const { return params_; }

@@ -23,13 +23,13 @@ SteadyStateGA::SteadyStateGA(const GaParams& params, std::uint64_t seed, Problem
     blocks_ = check_blocks(problem_.blocks(), problem_.dimension());
 }
 
-BatchOutcome SteadyStateGA::step(int threads) {
+BatchOutcome SteadyStateGA::step(int threads, BatchEvaluator* remote) {
     const std::size_t count = batch_size(state_.births, params_);
     const std::size_t dimension = problem_.dimension();
     const std::vector<Individual>& snapshot = state_.population;  // not modified until the batch is bred
     BredBatch bred = breed_batch(problem_, state_.births, count, threads, [&](std::uint64_t birth) {
         return conceive(snapshot, params_, blocks_, dimension, seed_, birth);
-    });
+    }, remote);
 
     BatchOutcome out;
     out.children = std::move(bred.children);

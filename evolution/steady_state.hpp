@@ -8,6 +8,7 @@
 //
 // Generation g (g >= 0) is births [g*P, (g+1)*P); generation 0 is the random
 // initial population. Batches never cross a generation boundary.
+#include "batch.hpp"
 #include "ga_params.hpp"
 #include "individual.hpp"
 #include "problem.hpp"
@@ -45,7 +46,8 @@ public:
     // One batch with `threads` workers (<= 0: OpenMP's default). Exceptions
     // from the problem make that child invalid; only failures outside
     // evaluation (e.g. out of memory) propagate, after the parallel region.
-    BatchOutcome step(int threads);
+    // With `remote`, the batch is scored by it (batch.hpp), with the same result.
+    BatchOutcome step(int threads, BatchEvaluator* remote = nullptr);
 
     const GaState& state() const { return state_; }
     const GaParams& params() const { return params_; }

@@ -9,6 +9,7 @@ packages=(
   nlohmann-json3-dev libvalijson-dev libspdlog-dev libfmt-dev libcli11-dev
   libtinygltf-dev libstb-dev catch2
   libjs-three chromium python3   # report: three.js copied into each report; its browser tests
+  libopenmpi-dev openmpi-bin
 )
 
 missing=()

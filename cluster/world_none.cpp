@@ -1,0 +1,16 @@
+// World in a build without MPI: main() never makes one (a launched process
+// exits 2 first), but the code that uses it still links.
+#include "world.hpp"
+
+#include <exception>
+#include <stdexcept>
+
+namespace morphogen::cluster {
+
+World::World(int&, char**&) { throw std::runtime_error("this morphogen was built without MPI"); }
+World::~World() = default;
+void World::send(int, int, const std::string&, const std::function<void()>&) { throw std::logic_error("no MPI"); }
+Message World::receive(int, int, const std::function<void()>&) { throw std::logic_error("no MPI"); }
+void World::abort(int) { std::terminate(); }
+
+}  // namespace morphogen::cluster
