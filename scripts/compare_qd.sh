@@ -4,8 +4,8 @@
 # (docs/results.md "MAP-Elites against the GA and random search").
 #
 # usage: scripts/compare_qd.sh [GENERATIONS] [POPULATION] [SEEDS...]
-#   defaults: 100 100 1 2 3 -> budget B = POPULATION * (GENERATIONS + 1)
-#   = 10,100 births per run; results in out/compare_qd/ (OUT=... to change)
+#   defaults: 50 100 1 2 3 -> budget B = POPULATION * (GENERATIONS + 1)
+#   = 5,100 births per run; results in out/compare_qd/ (OUT=... to change)
 #
 # For each seed s:
 #   ga-s      configs/canopy.json with map_elites.json's `descriptors` added
@@ -14,15 +14,16 @@
 #   random-s  configs/map_elites.json with population B and 0 generations:
 #             generation 0 is B random genomes, nothing is bred
 # all with `evolution.population` POPULATION (random: B), --seed s, 2 threads.
-# A run whose history.csv is complete is not run again, so the script can be
-# re-run to redo the table. Then scripts/qd_bin.py bins every lineage.csv
+# A run whose history.csv is complete is not run again, and one that was
+# stopped is resumed (to the same bytes as an unbroken run), so the script can
+# be stopped and re-run, or re-run to redo the table. Then scripts/qd_bin.py bins every lineage.csv
 # into the grid of map_elites.json (best fitness per cell) and prints the
 # table: coverage, QD-score (sum of fitness - 0 over occupied cells) and best
 # canopy per method and seed, with means; and draws the three methods'
 # fitness heatmaps for the first seed side by side (heatmaps-seed-S.png).
 set -euo pipefail
 cd "$(dirname "$0")/.."
-generations=${1:-100}
+generations=${1:-50}
 population=${2:-100}
 shift $(( $# > 2 ? 2 : $# ))
 seeds=("$@")
@@ -65,9 +66,15 @@ for s in "${seeds[@]}"; do
     gens=$generations
     [ "$method" = random ] && gens=0
     if complete "$dir" $(( gens + 1 )); then continue; fi
-    echo "$(date -u +%H:%M:%S) $method seed $s: $exe evolve $out/$method.json --seed $s --generations $gens --out $dir" >&2
-    "$exe" evolve "$out/$method.json" --seed "$s" --generations "$gens" --threads "$threads" --out "$dir" --force \
-      > "$dir.log" 2>&1
+    if [ -f "$dir/checkpoint.json" ] && cmp -s "$out/$method.json" "$dir.json"; then
+      echo "$(date -u +%H:%M:%S) $method seed $s: $exe resume $dir --generations $gens" >&2
+      "$exe" resume "$dir" --generations "$gens" --threads "$threads" >> "$dir.log" 2>&1
+    else
+      echo "$(date -u +%H:%M:%S) $method seed $s: $exe evolve $out/$method.json --seed $s --generations $gens --out $dir" >&2
+      cp "$out/$method.json" "$dir.json"  # what this run was started from
+      "$exe" evolve "$out/$method.json" --seed "$s" --generations "$gens" --threads "$threads" --out "$dir" --force \
+        > "$dir.log" 2>&1
+    fi
   done
 done
 
