@@ -93,7 +93,7 @@ def n_cells(grid):
 def table(args):
     grid = read_grid(args.grid_from)
     total = n_cells(grid)
-    results = []  # (method, seed, coverage, qd, best, births)
+    results = []  # (method, seed, coverage, qd, best, births, cells with fitness > offset)
     for spec in args.runs:
         name, sep, run_dir = spec.partition("=")
         method, _, seed = name.partition("/")
@@ -103,15 +103,17 @@ def table(args):
         if args.budget and births != args.budget:
             print(f"qd_bin.py: warning: {run_dir} has {births} births, not the budget {args.budget}", file=sys.stderr)
         qd = sum(f - args.qd_offset for f in cells.values())
-        results.append((method, seed, len(cells) / total, qd, best, births))
+        results.append((method, seed, len(cells) / total, qd, best, births,
+                        sum(1 for f in cells.values() if f > args.qd_offset)))
 
     names = " x ".join(f"{n} [{lo:g}, {hi:g}] in {b} bins" for n, lo, hi, b in grid)
     print(f"Grid: {names} ({total} cells); QD-score offset {args.qd_offset:g}.\n")
-    print("| method | seed | births | coverage | QD-score | best canopy |")
-    print("|---|---|---|---|---|---|")
-    for method, seed, coverage, qd, best, births in results:
+    print(f"| method | seed | births | coverage | cells scoring > {args.qd_offset:g} | QD-score | best canopy |")
+    print("|---|---|---|---|---|---|---|")
+    for method, seed, coverage, qd, best, births, scoring in results:
         best_text = "—" if best is None else f"{best:.1f}"
-        print(f"| {method} | {seed} | {births} | {coverage:.4f} ({round(coverage * total)} cells) | {qd:.0f} | {best_text} |")
+        print(f"| {method} | {seed} | {births} | {coverage:.4f} ({round(coverage * total)} cells) | {scoring} | {qd:.0f} | "
+              f"{best_text} |")
     print()
     methods = list(dict.fromkeys(r[0] for r in results))
     means = {}
