@@ -6,18 +6,20 @@
 # usage: scripts/compare_qd.sh [GENERATIONS] [POPULATION] [SEEDS...]
 #   defaults: 50 100 1 2 3 -> budget B = POPULATION * (GENERATIONS + 1)
 #   = 5,100 births per run; results in out/compare_qd/ (OUT=... to change)
+#   ME_CONFIG=... replaces configs/map_elites.json (its descriptors are the grid)
 #
 # For each seed s:
 #   ga-s      configs/canopy.json with map_elites.json's `descriptors` added
 #             (a GA records them in lineage.csv; its search is unchanged)
-#   me-s      configs/map_elites.json
-#   random-s  configs/map_elites.json with population B and 0 generations:
+#   me-s      configs/map_elites.json (or ME_CONFIG)
+#   random-s  the same with population B and 0 generations:
 #             generation 0 is B random genomes, nothing is bred
 # all with `evolution.population` POPULATION (random: B), --seed s, 2 threads.
 # A run whose history.csv is complete is not run again, and one that was
 # stopped is resumed (to the same bytes as an unbroken run), so the script can
-# be stopped and re-run, or re-run to redo the table. Then scripts/qd_bin.py bins every lineage.csv
-# into the grid of map_elites.json (best fitness per cell) and prints the
+# be stopped and re-run, or re-run to redo the table (a run whose config
+# changed is started again). Then scripts/qd_bin.py bins every lineage.csv
+# into the grid of the MAP-Elites config (best fitness per cell) and prints the
 # table: coverage, QD-score (sum of fitness - 0 over occupied cells) and best
 # canopy per method and seed, with means; and draws the three methods'
 # fitness heatmaps for the first seed side by side (heatmaps-seed-S.png).
@@ -31,18 +33,19 @@ seeds=("$@")
 exe=build/morphogen
 out=${OUT:-out/compare_qd}
 threads=${THREADS:-2}
+me_config=${ME_CONFIG:-configs/map_elites.json}
 budget=$(( population * (generations + 1) ))
 mkdir -p "$out"
 
 # The three configs, from the shipped ones; they must agree on what is grown and scored.
-python3 - "$out" "$population" "$budget" <<'PY'
+python3 - "$out" "$population" "$budget" "$me_config" <<'PY'
 import json, sys
-out, population, budget = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+out, population, budget, me_config = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), sys.argv[4]
 ga = json.load(open("configs/canopy.json"))
-me = json.load(open("configs/map_elites.json"))
+me = json.load(open(me_config))
 for key in ("network", "growth", "fitness"):
     if ga.get(key) != me.get(key):
-        sys.exit(f"compare_qd: configs/canopy.json and configs/map_elites.json differ in {key!r}")
+        sys.exit(f"compare_qd: configs/canopy.json and {me_config} differ in {key!r}")
 for c in (ga, me):
     c.pop("$schema", None)
 ga["descriptors"] = me["descriptors"]
@@ -65,8 +68,10 @@ for s in "${seeds[@]}"; do
     dir="$out/$method-$s"
     gens=$generations
     [ "$method" = random ] && gens=0
-    if complete "$dir" $(( gens + 1 )); then continue; fi
-    if [ -f "$dir/checkpoint.json" ] && cmp -s "$out/$method.json" "$dir.json"; then
+    same=false  # the run was started from this very config
+    cmp -s "$out/$method.json" "$dir.json" 2>/dev/null && same=true
+    if $same && complete "$dir" $(( gens + 1 )); then continue; fi
+    if $same && [ -f "$dir/checkpoint.json" ]; then
       echo "$(date -u +%H:%M:%S) $method seed $s: $exe resume $dir --generations $gens" >&2
       "$exe" resume "$dir" --generations "$gens" --threads "$threads" >> "$dir.log" 2>&1
     else
@@ -82,7 +87,7 @@ runs=()
 for s in "${seeds[@]}"; do
   for method in ga me random; do runs+=("$method/$s=$out/$method-$s"); done
 done
-python3 scripts/qd_bin.py table --grid-from configs/map_elites.json --budget "$budget" "${runs[@]}"
+python3 scripts/qd_bin.py table --grid-from "$me_config" --budget "$budget" "${runs[@]}"
 s=${seeds[0]}
-python3 scripts/qd_bin.py heatmap --grid-from configs/map_elites.json --png "$out/heatmaps-seed-$s.png" \
+python3 scripts/qd_bin.py heatmap --grid-from "$me_config" --png "$out/heatmaps-seed-$s.png" \
   "GA=$out/ga-$s" "MAP-Elites=$out/me-$s" "random=$out/random-$s"
