@@ -15,6 +15,9 @@ cell: what a MAP-Elites archive over all of the run's births would hold.
   qd_bin.py heatmap --grid-from CONFIG --png OUT.png TITLE=RUN_DIR...
       the runs' best-fitness-per-cell maps side by side on one colour scale
       (blue low .. yellow high, as `morphogen archive --png`), empty cells grey
+  qd_bin.py parents RUN_DIR...
+      selection pressure: the share of bred births (those with a parent) whose
+      first parent was within 10 % of the best fitness born before them
 
 Standard library only (the PNG is written with zlib).
 """
@@ -250,6 +253,28 @@ def heatmap(args):
     print(f"wrote {args.png}", file=sys.stderr)
 
 
+def parents(args):
+    print("| run | bred births | first parent within 10 % of the best so far |")
+    print("|---|---|---|")
+    for run_dir in args.runs:
+        path = f"{run_dir}/lineage.csv"
+        try:
+            with open(path, newline="") as f:
+                rows = list(csv.DictReader(f))
+        except OSError as e:
+            fail(f"{path}: {e.strerror}")
+        fitness, best, bred, near = {}, None, 0, 0
+        for row in rows:
+            if row["parent1"]:
+                bred += 1
+                p = fitness.get(int(row["parent1"]))
+                near += 1 if p is not None and best is not None and p >= 0.9 * best else 0
+            if row["fitness"]:
+                fitness[int(row["id"])] = float(row["fitness"])
+                best = fitness[int(row["id"])] if best is None else max(best, fitness[int(row["id"])])
+        print(f"| {run_dir} | {bred} | {near / bred if bred else 0:.1%} |")
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     sub = parser.add_subparsers(dest="command", required=True)
@@ -264,8 +289,10 @@ def main():
     h.add_argument("--png", required=True)
     h.add_argument("--cell", type=int, default=16, help="pixels per cell (default 16)")
     h.add_argument("runs", nargs="+", metavar="TITLE=RUN_DIR")
+    p = sub.add_parser("parents", help="how often a bred birth's first parent was near the best so far")
+    p.add_argument("runs", nargs="+", metavar="RUN_DIR")
     args = parser.parse_args()
-    table(args) if args.command == "table" else heatmap(args)
+    {"table": table, "heatmap": heatmap, "parents": parents}[args.command](args)
 
 
 if __name__ == "__main__":
