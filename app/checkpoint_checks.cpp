@@ -96,6 +96,7 @@ void check_history(const RunState& s, std::uint64_t P) {
 struct LineageRow {
     std::uint64_t id = 0;
     std::string_view text;  // the row with its newline
+    std::size_t columns = 0;  // descriptor cells after the fitness
     bool valid = false;
     double fitness = 0.0;
 };
@@ -107,9 +108,10 @@ std::uint64_t parse_u64(std::string_view cell, const std::string& where) {
     return value;
 }
 
-std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t births, const std::string& name) {
-    const std::string_view header = lineage_header;
+std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t births, const std::string& name,
+                                      std::string_view header) {
     if (lineage.substr(0, header.size()) != header) contradiction("lineage.csv does not start with its header");
+    const auto commas = std::count(header.begin(), header.end(), ',');
     std::vector<LineageRow> rows;
     std::size_t pos = header.size();
     while (pos < lineage.size()) {
@@ -119,11 +121,15 @@ std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t bi
         LineageRow row;
         row.text = lineage.substr(pos, end + 1 - pos);
         const std::string_view line = lineage.substr(pos, end - pos);
-        if (std::count(line.begin(), line.end(), ',') != 4) contradiction(where + " does not have 5 cells");
+        if (std::count(line.begin(), line.end(), ',') != commas)
+            contradiction(where + " does not have " + std::to_string(commas + 1) + " cells");
         row.id = parse_u64(line.substr(0, line.find(',')), where);
         if (row.id != rows.size()) contradiction(where + " has id " + std::to_string(row.id) + ", not " +
                                                  std::to_string(rows.size()));
-        const std::string_view fitness = line.substr(line.rfind(',') + 1);
+        std::size_t fitness_start = 0;  // after the 4th comma
+        for (int k = 0; k < 4; ++k) fitness_start = line.find(',', fitness_start) + 1;
+        const std::string_view fitness = line.substr(fitness_start, line.find(',', fitness_start) - fitness_start);
+        row.columns = static_cast<std::size_t>(commas) - 4;
         if (!fitness.empty()) {
             const auto [stop, error] = std::from_chars(fitness.data(), fitness.data() + fitness.size(), row.fitness);
             if (error != std::errc() || stop != fitness.data() + fitness.size() || !std::isfinite(row.fitness))
@@ -139,8 +145,19 @@ std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t bi
     return rows;
 }
 
+// A GA's state does not keep its members' descriptors, so only the cells up
+// to the fitness are compared then; a MAP-Elites elite keeps them, and its
+// whole row is.
 void check_recorded(const Individual& ind, const std::vector<LineageRow>& rows, const std::string& where) {
-    if (format_lineage_row(ind) != rows.at(ind.id).text)
+    const LineageRow& row = rows.at(ind.id);
+    std::string_view recorded = row.text;
+    std::string expected = format_lineage_row(ind, ind.descriptors.empty() ? 0 : row.columns);
+    if (ind.descriptors.empty() && row.columns > 0) {
+        expected.pop_back();  // compare "id,...,fitness," with the row's start
+        expected += ',';
+        recorded = recorded.substr(0, expected.size());
+    }
+    if (expected != recorded)
         contradiction(where + " (id " + std::to_string(ind.id) + ") differs from its lineage.csv row");
 }
 
@@ -190,10 +207,11 @@ void check_checkpoint_content(const RunState& s, const ExperimentConfig& config)
     check_history(s, P);
 }
 
-void check_checkpoint_against_lineage(const RunState& s, std::string_view lineage, std::uint64_t P) {
+void check_checkpoint_against_lineage(const RunState& s, std::string_view lineage, std::uint64_t P,
+                                      std::string_view header) {
     const SearchView v = view_of(s);
     const std::optional<Individual>& best = *v.best;
-    const std::vector<LineageRow> rows = parse_lineage(lineage, v.births, v.name);
+    const std::vector<LineageRow> rows = parse_lineage(lineage, v.births, v.name, header);
     for (std::size_t i = 0; i < v.members.size(); ++i) check_recorded(*v.members[i], rows, at(v.members_name.c_str(), i));
     const LineageRow* first_best = nullptr;
     for (const LineageRow& row : rows)

@@ -6,6 +6,7 @@
 // contradicts what; callers turn that into a refused checkpoint (exit 5).
 #include "checkpoint.hpp"
 #include "experiment_config.hpp"
+#include "run_records.hpp"
 
 #include <string_view>
 
@@ -19,10 +20,13 @@ namespace morphogen {
 void check_checkpoint_content(const RunState& state, const ExperimentConfig& config);
 
 // The content against `lineage`, lineage.csv's first state.lineage_bytes
-// bytes (whose hash was already checked): a header and exactly one row per
-// birth in id order; every population member and the best individual as
-// their rows record them; the best the first of the highest fitness; the
-// invalid births of every generation (history) and of the current one.
-void check_checkpoint_against_lineage(const RunState& state, std::string_view lineage, std::uint64_t population);
+// bytes (whose hash was already checked): `header` (lineage_header_for the
+// config's descriptors) and exactly one row per birth in id order, with its
+// cells; every population member and the best individual as their rows
+// record them (id to fitness; the descriptors too where the state holds
+// them, as MAP-Elites elites do); the best the first of the highest fitness;
+// the invalid births of every generation (history) and of the current one.
+void check_checkpoint_against_lineage(const RunState& state, std::string_view lineage, std::uint64_t population,
+                                      std::string_view header = lineage_header);
 
 }  // namespace morphogen

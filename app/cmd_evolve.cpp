@@ -8,6 +8,7 @@
 #include "archive_csv.hpp"
 #include "report.hpp"
 #include "resource_options.hpp"
+#include "run_records.hpp"
 
 #include <chrono>
 #include <iostream>
@@ -58,7 +59,7 @@ int run_evolve(const EvolveOptions& o) {
                        config,
                        RunState{},
                        AppendFile::create(paths.history, history_header_for(config.algorithm == Algorithm::map_elites)),
-                       AppendFile::create(paths.lineage, lineage_header),
+                       AppendFile::create(paths.lineage, lineage_header_for(config.qd.measure_names())),
                        std::move(log)};
     // The first checkpoint (no births yet) makes the directory resumable.
     session.state.config = config.resolved;

@@ -11,6 +11,7 @@
 #include "archive_csv.hpp"
 #include "report.hpp"
 #include "resource_options.hpp"
+#include "run_records.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -75,7 +76,8 @@ int run_resume(const ResumeOptions& o) {
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
     try {
         check_checkpoint_against_lineage(
-            state, AppendFile::check_prefix(paths.lineage, state.lineage_bytes, state.lineage_hash), P);
+            state, AppendFile::check_prefix(paths.lineage, state.lineage_bytes, state.lineage_hash), P,
+            lineage_header_for(config.qd.measure_names()));
     } catch (const std::invalid_argument& e) {
         throw CheckpointError("checkpoint " + paths.checkpoint.string() + " refused: it contradicts " +
                               paths.lineage.string() + ": " + e.what());

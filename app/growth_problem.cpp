@@ -5,6 +5,7 @@
 #include "mesh_io.hpp"
 #include "network.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -16,8 +17,9 @@ GrowthProblem::GrowthProblem(const ExperimentConfig& config)
       dimension_(parameter_count(layers_)),
       growth_(config.growth),
       seed_(make_seed(config.growth.seed_mesh, config.growth.seed_radius)),
-      fitness_(config.fitness) {
-    if (config.algorithm == Algorithm::map_elites)
+      fitness_(config.fitness),
+      descriptors_decide_validity_(config.algorithm == Algorithm::map_elites) {
+    if (!config.qd.descriptors.empty())
         descriptors_.emplace(config.qd.measure_names(), canopy_params_of(config.resolved.at("fitness")));
 }
 
@@ -37,9 +39,20 @@ Evaluation GrowthProblem::evaluate(std::span<const double> params, int worker) c
         try {
             evaluation.descriptors = (*descriptors_)(state.mesh.view());
         } catch (const std::invalid_argument& e) {
-            evaluation.valid = false;
-            evaluation.error = std::string("descriptors: ") + e.what();
+            if (descriptors_decide_validity_) {
+                evaluation.valid = false;
+                evaluation.error = std::string("descriptors: ") + e.what();
+            }
         }
+        // A GA only records them: a birth it could not measure stays as it is,
+        // with no descriptors (empty cells in lineage.csv), so declaring
+        // descriptors never changes what a GA run computes.
+        if (!descriptors_decide_validity_)
+            for (double d : evaluation.descriptors)
+                if (!std::isfinite(d)) {
+                    evaluation.descriptors.clear();
+                    break;
+                }
     }
     return evaluation;
 }

@@ -24,9 +24,11 @@ public:
     // One block per neuron (weights and threshold), as crossover exchanges them.
     std::vector<Block> blocks() const override;
     void prepare(int workers) override;
-    // Score = fitness of the grown mesh; size = its vertex count; for a
-    // MAP-Elites run, descriptors = the config's measures of that same mesh
-    // (a valid score with a measure that throws is invalid, with the reason).
+    // Score = fitness of the grown mesh; size = its vertex count; when the
+    // config has descriptors, descriptors = its measures of that same mesh.
+    // In a MAP-Elites run a valid score with a measure that throws is
+    // invalid, with the reason; a GA run only records the measures, so there
+    // a measure that throws or is non-finite leaves descriptors empty.
     Evaluation evaluate(std::span<const double> params, int worker) const override;
 
     // Grows one genome (single-threaded use, e.g. exporting the best).
@@ -41,7 +43,8 @@ private:
     GrowthParams growth_;
     Seed seed_;
     std::shared_ptr<const Fitness> fitness_;
-    std::optional<DescriptorSet> descriptors_;  // MAP-Elites runs only
+    std::optional<DescriptorSet> descriptors_;  // when the config has descriptors
+    bool descriptors_decide_validity_;          // MAP-Elites: a failed measure makes the birth invalid
     // One per worker; evaluate() with worker w touches only workspaces_[w].
     mutable std::vector<GrowthWorkspace> workspaces_;
 };

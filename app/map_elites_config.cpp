@@ -71,12 +71,12 @@ QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
     QdParams qd;
     const json* descriptors = top.raw("descriptors");
     const json* archive = top.raw("archive");
-    if (algorithm != Algorithm::map_elites) {
-        for (const char* key : {"descriptors", "archive"})
-            if (top.raw(key) != nullptr)
-                issues.add(key, "used only when evolution.algorithm is \"map_elites\"");
-        return qd;
-    }
+    const bool ga = algorithm != Algorithm::map_elites;
+    if (ga && archive != nullptr) issues.add("archive", "used only when evolution.algorithm is \"map_elites\"");
+    // A steady-state run may declare descriptors only to record them in
+    // lineage.csv (to bin a GA run into a MAP-Elites grid afterwards); without
+    // them it resolves to the same bytes as before they existed.
+    if (ga && descriptors == nullptr) return qd;
 
     // descriptors: a non-empty array of {measure, min, max, bins}
     json resolved_descriptors = json::array();
@@ -95,6 +95,7 @@ QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
         }
     }
     top.set_resolved("descriptors", resolved_descriptors);
+    if (ga) return qd;  // no archive: any number of descriptors, no grid limits
 
     // archive: {type, cells (CVT only), qd_offset}
     ObjectReader reader(archive, "archive", issues);

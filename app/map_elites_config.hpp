@@ -2,8 +2,9 @@
 // The config keys of MAP-Elites runs (ALGORITHM.md §8, docs/map-elites.md):
 // `evolution.algorithm`, the top-level `descriptors` list and `archive`
 // section. They appear in the resolved config only when the algorithm is
-// "map_elites", so a steady-state config resolves to the same bytes as before
-// they existed (its config.json and checkpoints are unchanged).
+// "map_elites" (and `descriptors` when a steady-state config gives it), so a
+// steady-state config without them resolves to the same bytes as before they
+// existed (its config.json and checkpoints are unchanged).
 #include "archive.hpp"
 #include "config_reader.hpp"
 
@@ -30,9 +31,12 @@ struct QdParams {
 // `algorithm`, adding every problem to the reader's issues with its key path:
 // an unknown measure (with the nearest name), min >= max, bins < 1, a grid
 // with no or more than 3 descriptors or more than kMaxGridCells cells, a CVT
-// with more than kMaxCvtCells cells, and either key given for a steady-state
-// run (it would be ignored). Records both in the resolved config only for
-// map_elites. Whether a full archive fits in memory is resource_estimate's
+// with more than kMaxCvtCells cells, and `archive` given for a steady-state
+// run (it would be ignored). A steady-state run may give `descriptors` (any
+// number, no archive limits): its births' measures are then recorded in
+// lineage.csv, so it can be binned like a MAP-Elites run. Records
+// `descriptors` in the resolved config when it is given or the run is
+// map_elites, `archive` only for map_elites. Whether a full archive fits in memory is resource_estimate's
 // part (search_genomes counts its cells), with the other limits.
 QdParams read_qd_params(ObjectReader& top, Algorithm algorithm);
 

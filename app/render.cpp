@@ -279,7 +279,10 @@ int text_width(const std::string& text, int scale) {
 }
 
 void draw_text(Image& img, int x, int y, const std::string& text, int scale, std::uint8_t grey) {
-    std::vector<char> quads(text.size() * 300 + 64);
+    // One 64-byte quad per segment and at most 11 segments per glyph ('X');
+    // stb_easy_font silently drops what does not fit, which cut off the
+    // later glyphs of labels such as "800" and the right half of a '0'.
+    std::vector<char> quads(text.size() * 11 * 64 + 64);
     unsigned char colour[4] = {grey, grey, grey, 255};
     const int n = stb_easy_font_print(0, 0, const_cast<char*>(text.c_str()), colour, quads.data(),
                                       static_cast<int>(quads.size()));

@@ -71,6 +71,24 @@ bool holds_no_rows(const fs::path& path, std::string_view header) {
     }
 }
 
+// Whether lineage.csv is missing or holds a prefix of its header, which has
+// a descriptor column per name after lineage_header's when the config has
+// descriptors (names of measures: no comma or newline in them).
+bool holds_no_lineage_rows(const fs::path& path) {
+    const std::string_view base(lineage_header, std::string_view(lineage_header).size() - 1);  // without '\n'
+    if (holds_no_rows(path, lineage_header)) return true;
+    std::error_code ec;
+    if (!fs::is_regular_file(fs::symlink_status(path, ec))) return false;
+    try {
+        const std::string bytes = read_file_bytes(path);
+        const std::size_t newline = bytes.find('\n');
+        return bytes.size() > base.size() && bytes.compare(0, base.size(), base) == 0 && bytes[base.size()] == ',' &&
+               (newline == std::string::npos || newline == bytes.size() - 1);
+    } catch (const IoError&) {
+        return false;
+    }
+}
+
 bool ends_with(const std::string& text, std::string_view tail) {
     return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -104,7 +122,7 @@ bool is_stopped_start(const RunPaths& paths) {
     }
     if (ec) return false;
     return (holds_no_rows(paths.history, history_header) || holds_no_rows(paths.history, history_header_qd)) &&
-           holds_no_rows(paths.lineage, lineage_header);
+           holds_no_lineage_rows(paths.lineage);
 }
 
 void create_run_dir(const RunPaths& paths, bool force) {

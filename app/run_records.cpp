@@ -37,13 +37,25 @@ std::string format_history_row(const HistoryRow& r) {
            format_number(r.births_per_s) + ',' + format_number(r.elapsed_s) + '\n';
 }
 
-std::string format_lineage_row(const Individual& ind) {
+std::string lineage_header_for(const std::vector<std::string>& descriptor_names) {
+    std::string header = lineage_header;
+    header.pop_back();  // the newline
+    for (const std::string& name : descriptor_names) header += ',' + name;
+    return header + '\n';
+}
+
+std::string format_lineage_row(const Individual& ind, std::size_t descriptor_columns) {
     std::string row = std::to_string(ind.id) + ',' + std::to_string(ind.id) + ',';
     if (ind.parent1) row += std::to_string(*ind.parent1);
     row += ',';
     if (ind.parent2) row += std::to_string(*ind.parent2);
     row += ',';
     if (ind.valid()) row += format_number(ind.fitness);
+    const bool measured = ind.descriptors.size() == descriptor_columns;
+    for (std::size_t k = 0; k < descriptor_columns; ++k) {
+        row += ',';
+        if (measured) row += format_number(ind.descriptors[k]);
+    }
     row += '\n';
     return row;
 }

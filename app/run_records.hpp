@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace morphogen {
 
@@ -23,6 +24,10 @@ inline constexpr const char* history_header_qd =
 inline const char* history_header_for(bool qd) { return qd ? history_header_qd : history_header; }
 inline constexpr const char* archive_header_tail = "fitness,id\n";  // archive.csv: cell,<descriptors>,fitness,id
 inline constexpr const char* lineage_header = "id,birth,parent1,parent2,fitness\n";
+// lineage.csv's header for a config with a `descriptors` list: one more
+// column per descriptor, named by its measure; exactly lineage_header when
+// there is none (runs without descriptors are as before).
+std::string lineage_header_for(const std::vector<std::string>& descriptor_names);
 
 struct HistoryRow {
     std::uint64_t generation = 0;
@@ -41,8 +46,11 @@ struct HistoryRow {
 std::string format_number(double value);
 // With the QD columns exactly when row.qd.
 std::string format_history_row(const HistoryRow& row);
-// id,birth,parent1,parent2,fitness (birth repeats the id: ids are birth indices).
-std::string format_lineage_row(const Individual& individual);
+// id,birth,parent1,parent2,fitness (birth repeats the id: ids are birth
+// indices), then `descriptor_columns` cells: the individual's descriptors when
+// it has exactly that many, all empty otherwise (an invalid birth, or a GA
+// birth whose measures could not be taken).
+std::string format_lineage_row(const Individual& individual, std::size_t descriptor_columns = 0);
 
 // The QD keys (coverage, qd_score, new_cells) only when row.qd, so GA
 // checkpoints are as before; read back when present.

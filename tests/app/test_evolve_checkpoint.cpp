@@ -244,3 +244,49 @@ TEST_CASE("invalid births and the best are checked against lineage.csv", "[app][
     CHECK_THROWS_WITH(check_checkpoint_against_lineage(later, lineage + format_lineage_row(born(4, 2, 2.0)), 2),
                       Catch::Contains("invalid_in_generation"));
 }
+
+TEST_CASE("lineage.csv with descriptor columns is checked against the checkpoint", "[app][checkpoint]") {
+    auto born = [](std::uint64_t id, double fitness, std::vector<double> descriptors) {
+        Individual ind;
+        ind.id = id;
+        ind.fitness = fitness;
+        ind.size = 12;
+        ind.params = {0.5};
+        ind.descriptors = std::move(descriptors);
+        return ind;
+    };
+    const std::vector<Individual> births{born(0, 1.0, {1.5, 2}), born(1, invalid_fitness, {}), born(2, 2.0, {3, 0.25})};
+    const std::string header = lineage_header_for({"height", "footprint"});
+    std::string lineage = header;
+    for (const Individual& ind : births) lineage += format_lineage_row(ind, 2);
+    // a GA's state keeps no descriptors: its members are compared up to the fitness
+    RunState state;
+    state.ga.births = 3;
+    state.ga.population = {births[2], births[0], births[1]};
+    for (Individual& member : state.ga.population) member.descriptors.clear();
+    state.ga.best = state.ga.population[0];
+    state.ga.invalid_in_generation = 1;
+    REQUIRE_NOTHROW(check_checkpoint_against_lineage(state, lineage, 3, header));
+    // the header must be the config's
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(state, lineage, 3), Catch::Contains("does not start with its header"));
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(state, lineage, 3, lineage_header_for({"height"})),
+                      Catch::Contains("does not start with its header"));
+    // every row has the header's cells
+    std::string short_row = lineage;
+    short_row.replace(short_row.find(",3,0.25\n"), 7, ",3\n");
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(state, short_row, 3, header),
+                      Catch::Contains("lineage.csv row 3 does not have 7 cells"));
+    // the fitness is the fifth cell, not the last
+    RunState worse = state;
+    worse.ga.population[0].fitness = 0.25;
+    worse.ga.best = worse.ga.population[0];
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(worse, lineage, 3, header),
+                      Catch::Contains("differs from its lineage.csv row"));
+    // a member that keeps its descriptors (a MAP-Elites elite) is compared with them
+    RunState kept = state;
+    kept.ga.population[1].descriptors = {1.5, 2};
+    CHECK_NOTHROW(check_checkpoint_against_lineage(kept, lineage, 3, header));
+    kept.ga.population[1].descriptors = {1.5, 2.5};
+    CHECK_THROWS_WITH(check_checkpoint_against_lineage(kept, lineage, 3, header),
+                      Catch::Contains("ga.population[1] (id 0) differs from its lineage.csv row"));
+}

@@ -315,14 +315,31 @@ TEST_CASE("steady_state configs resolve to the same bytes as before map_elites e
     const ExperimentConfig named = read_experiment_config(json{{"evolution", {{"algorithm", "steady_state"}}}}, "x");
     CHECK(named.resolved == plain.resolved);
     CHECK(named.resolved.dump(2) == plain.resolved.dump(2));
-    // descriptors or an archive without map_elites would be silently ignored: refused
+    // an archive without map_elites would be silently ignored: refused
     const std::string errors = config_errors(json::parse(
         R"({"descriptors": [{"measure": "height", "min": 0, "max": 1}], "archive": {"type": "grid"}})"));
-    CHECK_THAT(errors, Catch::Contains("test.json: descriptors: used only when evolution.algorithm is \"map_elites\""));
     CHECK_THAT(errors, Catch::Contains("test.json: archive: used only when"));
+    CHECK_THAT(errors, !Catch::Contains("descriptors"));
     CHECK_THAT(config_errors(json{{"evolution", {{"algorithm", "map_elite"}}}}),
                Catch::Contains("evolution.algorithm: \"map_elite\" is not one of \"steady_state\", \"map_elites\" "
                                "(did you mean \"map_elites\"?)"));
+}
+
+TEST_CASE("a steady-state config may declare descriptors, only to record them", "[app][config][map_elites]") {
+    const ExperimentConfig ga = read_experiment_config(json::parse(R"({"descriptors": [
+        {"measure": "height", "min": 0, "max": 20, "bins": 20}, {"measure": "footprint", "min": 0, "max": 800},
+        {"measure": "width", "min": 0, "max": 1}, {"measure": "area", "min": 0, "max": 1}]})"), "ga");
+    CHECK(ga.algorithm == Algorithm::steady_state);
+    CHECK(ga.qd.measure_names() == std::vector<std::string>{"height", "footprint", "width", "area"});  // no grid limit
+    CHECK(ga.resolved["descriptors"][1] == json::parse(R"({"measure": "footprint", "min": 0, "max": 800, "bins": 10})"));
+    CHECK_FALSE(ga.resolved.contains("archive"));
+    CHECK_FALSE(ga.resolved["evolution"].contains("algorithm"));
+    // the same checks as for MAP-Elites, with key paths, all at once
+    const std::string errors = config_errors(json::parse(R"({"descriptors": [
+        {"measure": "heigth", "min": 0, "max": 1}, {"measure": "height", "min": 2, "max": 2}]})"));
+    CHECK_THAT(errors, Catch::Contains("descriptors[0].measure: unknown measure \"heigth\" (did you mean \"height\"?)"));
+    CHECK_THAT(errors, Catch::Contains("descriptors[1]: min (2.0) must be less than max (2.0)"));
+    CHECK_THAT(config_errors(json::parse(R"({"descriptors": []})")), Catch::Contains("descriptors: expected a non-empty array"));
 }
 
 TEST_CASE("bad descriptor configs are refused all at once with their key paths", "[app][config][map_elites]") {

@@ -100,6 +100,7 @@ TEST_CASE("archive.csv agrees with lineage.csv and the checkpoint", "[app][map_e
     const std::vector<std::string> lineage = lines_of(read_text(tmp.path / "run" / "lineage.csv"));
     REQUIRE(archive.size() > 2);
     CHECK(archive[0] == "cell,height,footprint,fitness,id");
+    CHECK(lineage[0] == "id,birth,parent1,parent2,fitness,height,footprint");
     const RunState state = load_checkpoint(tmp.path / "run" / "checkpoint.json");
     REQUIRE(state.elites);
     CHECK(state.elites->archive.occupied() == archive.size() - 1);
@@ -117,6 +118,9 @@ TEST_CASE("archive.csv agrees with lineage.csv and the checkpoint", "[app][map_e
         const std::vector<std::string> birth = cells_of(lineage[id + 1]);
         CHECK(birth[0] == row[4]);
         CHECK(birth[4] == row[3]);  // the same fitness text as lineage.csv
+        REQUIRE(birth.size() == 7);  // lineage.csv records the descriptors too, with the same text
+        CHECK(birth[5] == row[1]);
+        CHECK(birth[6] == row[2]);
         // the cell is where the descriptors fall: 6 height bins over [0,3] x 5 footprint bins over [0,10]
         const auto bin = [](double x, double max, int bins) {
             return std::clamp(static_cast<long>(x / max * bins), 0L, static_cast<long>(bins - 1));
@@ -211,6 +215,63 @@ TEST_CASE("a steady-state run's files have no MAP-Elites columns", "[app][map_el
     CHECK_FALSE(content.contains("map_elites"));
     CHECK_FALSE(content["config"]["evolution"].contains("algorithm"));
     CHECK_FALSE(content["history"][0].contains("coverage"));
+}
+
+TEST_CASE("a GA run with descriptors records them in lineage.csv and computes what it computed without", "[app][map_elites][evolve]") {
+    TempDir tmp("ga-descriptors");
+    std::string with = me_config(4, "null");
+    with.replace(with.find(R"("algorithm": "map_elites", )"), std::string(R"("algorithm": "map_elites", )").size(), "");
+    with.replace(with.find(R"(,
+ "archive": null)"), std::string(R"(,
+ "archive": null)").size(), "");
+    nlohmann::json without = nlohmann::json::parse(with);
+    without.erase("descriptors");
+    write_text(tmp.path / "with.json", with);
+    write_text(tmp.path / "without.json", without.dump());
+    for (const char* name : {"with", "without"})
+        REQUIRE(run_morphogen("evolve " + (tmp.path / (std::string(name) + ".json")).string() + " --out " +
+                              (tmp.path / name).string())
+                    .code == 0);
+    // the same search: lineage.csv's first five cells, the history, the GA's state and best meshes
+    const std::vector<std::string> a = lines_of(read_text(tmp.path / "with" / "lineage.csv"));
+    const std::vector<std::string> b = lines_of(read_text(tmp.path / "without" / "lineage.csv"));
+    REQUIRE(a.size() == b.size());
+    REQUIRE(a.size() == 5 * 12 + 1);
+    CHECK(a[0] == "id,birth,parent1,parent2,fitness,height,footprint");
+    CHECK(b[0] == "id,birth,parent1,parent2,fitness");
+    for (std::size_t i = 1; i < a.size(); ++i) {
+        INFO(a[i]);
+        std::vector<std::string> cells = cells_of(a[i]);
+        REQUIRE(cells.size() == 7);
+        CHECK(cells[5].empty() == cells[4].empty());  // measured exactly when valid (no measure fails here)
+        cells.resize(5);
+        CHECK(cells == cells_of(b[i]));
+    }
+    CHECK(history_without_times(tmp.path / "with") == history_without_times(tmp.path / "without"));
+    nlohmann::json ca = checkpoint_content(read_text(tmp.path / "with" / "checkpoint.json"), "t");
+    nlohmann::json cb = checkpoint_content(read_text(tmp.path / "without" / "checkpoint.json"), "t");
+    CHECK(ca["ga"] == cb["ga"]);
+    CHECK(ca["config"]["descriptors"].size() == 2);
+    CHECK_FALSE(cb["config"].contains("descriptors"));
+    CHECK(read_text(tmp.path / "with" / "best" / "gen_0004.obj") == read_text(tmp.path / "without" / "best" / "gen_0004.obj"));
+    CHECK_FALSE(fs::exists(tmp.path / "with" / "archive.csv"));
+    // the recorded descriptors are those of the grown plant: the best regrows (morphogen score) to them
+    const std::uint64_t best = ca["ga"]["best"]["id"].get<std::uint64_t>();
+    const CliResult score = run_morphogen("score --genome " + (tmp.path / "with" / "best" / "gen_0004.genome.json").string() +
+                                          " --config " + (tmp.path / "with" / "config.json").string() + " --json");
+    REQUIRE(score.code == 0);
+    const nlohmann::json scored = nlohmann::json::parse(score.output);
+    const std::vector<std::string> row = cells_of(a[best + 1]);
+    CHECK(format_number(scored["fitness"].get<double>()) == row[4]);
+    CHECK(format_number(scored["height"].get<double>()) == row[5]);
+    CHECK(format_number(scored["footprint"].get<double>()) == row[6]);
+
+    // a resume (the GA's state holds no descriptors) continues the same lineage.csv
+    REQUIRE(run_morphogen("evolve " + (tmp.path / "with.json").string() + " --out " + (tmp.path / "split").string() +
+                          " --generations 2")
+                .code == 0);
+    REQUIRE(run_morphogen("resume " + (tmp.path / "split").string() + " --generations 4").code == 0);
+    check_same_results(tmp.path / "with", tmp.path / "split");
 }
 
 TEST_CASE("a MAP-Elites run stopped by Ctrl-C or kill -9 resumes to the same bytes", "[app][map_elites][signals]") {

@@ -30,6 +30,22 @@ TEST_CASE("lineage rows: parents empty when absent and fitness empty when invali
     CHECK(format_lineage_row(crossed) == "11,11,4,7,\n");
 }
 
+TEST_CASE("lineage rows and header with descriptor columns", "[app][records]") {
+    CHECK(lineage_header_for({}) == lineage_header);
+    CHECK(lineage_header_for({"height", "footprint"}) == "id,birth,parent1,parent2,fitness,height,footprint\n");
+    Individual measured{5, 1, {}, {}, 2.5};
+    measured.descriptors = {0.1, 12.0};
+    CHECK(format_lineage_row(measured, 2) == "5,5,1,,2.5,0.1,12\n");
+    CHECK(format_lineage_row(measured) == "5,5,1,,2.5\n");  // no columns asked for: as before
+    Individual invalid{6, 1, 2, {}, invalid_fitness};
+    CHECK(format_lineage_row(invalid, 2) == "6,6,1,2,,,\n");
+    // a valid birth whose measures could not be taken (a GA's), or a count that does not match: empty cells
+    Individual unmeasured{7, {}, {}, {}, 1.0};
+    CHECK(format_lineage_row(unmeasured, 2) == "7,7,,,1,,\n");
+    measured.descriptors = {0.1};
+    CHECK(format_lineage_row(measured, 2) == "5,5,1,,2.5,,\n");
+}
+
 TEST_CASE("history rows round-trip through the checkpoint's JSON", "[app][records]") {
     HistoryRow row{2, 300, 1.5, 1.25, 1.0, 0.5, 123.5, 4, 12.5, 60.25};
     CHECK(format_history_row(history_row_from_json(history_row_to_json(row))) == format_history_row(row));

@@ -189,3 +189,24 @@ TEST_CASE("`morphogen render` reads OBJ/OFF/PLY, validates options and reports b
     CHECK_THROWS_WITH(run_cli({"render", tmp.file("missing.obj"), "-o", out}), Catch::Contains("missing.obj"));
     CHECK_THROWS_AS(run_cli({"render", tmp.file("missing.obj"), "-o", out}), IoError);
 }
+
+TEST_CASE("labels draw every glyph, however many segments they have", "[render]") {
+    // Each glyph of "8008" is inked over its whole advance (stb_easy_font used
+    // to run out of vertex buffer and drop the later glyphs and half a '0').
+    for (const std::string text : {"800", "20", "0", "XXXXXXXX"}) {
+        INFO(text);
+        Image image(200, 20);
+        draw_label(image, 0, 2, text, 2, 0);
+        for (std::size_t i = 0; i < text.size(); ++i) {
+            const int x0 = label_width(text.substr(0, i), 2);
+            const int x1 = label_width(text.substr(0, i + 1), 2);
+            int left = 0, right = 0;  // ink in the left and the right half of glyph i
+            for (int y = 0; y < image.height; ++y)
+                for (int x = x0; x < x1; ++x)
+                    if (image.pixel(x, y)[0] < 128) ++(x < (x0 + x1) / 2 ? left : right);
+            CAPTURE(i, left, right);
+            CHECK(left > 0);
+            CHECK(right > 0);
+        }
+    }
+}
