@@ -1,5 +1,5 @@
 #pragma once
-// Exit codes of the morphogen CLI (documented in README.md and docs/cli.md).
+// Exit codes of the morphogen CLI (documented in README.md and docs/limits.md).
 namespace morphogen::exit_code {
 inline constexpr int ok = 0;
 inline constexpr int failure = 1;       // a run-time failure not covered below
