@@ -74,10 +74,18 @@ int run_resume(const ResumeOptions& o) {
     if (*o.threads_option) overrides.threads = o.threads;
     ExperimentConfig config = read_experiment_config(on_disk, paths.config.string(), overrides);
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
+    std::size_t lineage_descriptor_columns = config.qd.descriptors.size();
     try {
-        check_checkpoint_against_lineage(
-            state, AppendFile::check_prefix(paths.lineage, state.lineage_bytes, state.lineage_hash), P,
-            lineage_header_for(config.qd.measure_names()));
+        const std::string lineage_prefix =
+            AppendFile::check_prefix(paths.lineage, state.lineage_bytes, state.lineage_hash);
+        std::string header = lineage_header_for(config.qd.measure_names());
+        // A MAP-Elites run begun before lineage.csv had descriptor columns
+        // keeps its five columns, so that its lineage.csv stays one table.
+        if (config.algorithm == Algorithm::map_elites && lineage_prefix.starts_with(lineage_header)) {
+            header = lineage_header;
+            lineage_descriptor_columns = 0;
+        }
+        check_checkpoint_against_lineage(state, lineage_prefix, P, header);
     } catch (const std::invalid_argument& e) {
         throw CheckpointError("checkpoint " + paths.checkpoint.string() + " refused: it contradicts " +
                               paths.lineage.string() + ": " + e.what());
@@ -108,6 +116,7 @@ int run_resume(const ResumeOptions& o) {
     AppendFile history = AppendFile::create(paths.history, history_text);
     AppendFile lineage = AppendFile::resume(paths.lineage, state.lineage_bytes, state.lineage_hash);
     RunSession session{paths, config, std::move(state), std::move(history), std::move(lineage), std::move(log)};
+    session.lineage_descriptor_columns = lineage_descriptor_columns;
     session.log.both->info("resuming {} after {} births", o.dir, session.state.births());
     const int code = run_session(session, problem);
     if (code == exit_code::ok && !o.no_report) report_at_end_of_run(paths.dir);

@@ -217,7 +217,7 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
         const StepResult out = ga.step(threads, remote.get());
         std::string rows;
         for (std::size_t i = 0; i < out.children.size(); ++i) {
-            rows += format_lineage_row(out.children[i], config.qd.descriptors.size());
+            rows += format_lineage_row(out.children[i], s.lineage_descriptor_columns.value_or(config.qd.descriptors.size()));
             if (!out.errors[i].empty()) {
                 progress.clear();
                 log->warn("birth {} is invalid: {}", out.children[i].id, out.errors[i]);

@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 namespace morphogen {
@@ -40,6 +41,9 @@ struct RunSession {
     AppendFile history;       // positioned at the end of state.history's rows
     AppendFile lineage;       // positioned at state.lineage_bytes
     RunLoggers log;
+    // Descriptor columns of lineage.csv's rows: the config's descriptors,
+    // except for a run begun before lineage.csv had them (resume sets 0).
+    std::optional<std::size_t> lineage_descriptor_columns;
 };
 
 // Returns exit_code::ok when run.generations is complete, exit_code::interrupted

@@ -4,6 +4,7 @@
 // refused, and CVT centroids carried by the checkpoint.
 #include "app/evolve_test_support.hpp"
 #include "checkpoint.hpp"
+#include "fnv_hash.hpp"
 #include "run_records.hpp"
 
 #include <catch2/catch.hpp>
@@ -343,4 +344,43 @@ TEST_CASE("morphogen archive exports elites that regrow to their stored fitness 
     const CliResult ga = run_morphogen("archive " + (tmp.path / "ga").string());
     CHECK(ga.code == 2);
     CHECK_THAT(ga.output, Catch::Contains("not a MAP-Elites run"));
+}
+
+TEST_CASE("a MAP-Elites run begun before lineage.csv had descriptor columns resumes with five columns",
+          "[app][map_elites][evolve]") {
+    TempDir tmp("me-old-lineage");
+    write_text(tmp.path / "me.json", me_config(4));
+    const std::string config = (tmp.path / "me.json").string();
+    REQUIRE(run_morphogen("evolve " + config + " --out " + (tmp.path / "whole").string()).code == 0);
+    const fs::path old = tmp.path / "old";
+    REQUIRE(run_morphogen("evolve " + config + " --out " + old.string() + " --generations 2").code == 0);
+
+    // What the previous version wrote: lineage.csv without the descriptor
+    // columns, and a checkpoint sealing that file's length and hash.
+    auto five_columns = [](const std::string& text) {
+        std::string out;
+        for (const std::string& line : lines_of(text)) {
+            std::vector<std::string> cells = cells_of(line);
+            cells.resize(5);
+            out += cells[0] + "," + cells[1] + "," + cells[2] + "," + cells[3] + "," + cells[4] + "\n";
+        }
+        return out;
+    };
+    const std::string lineage = five_columns(read_text(old / "lineage.csv"));
+    REQUIRE(lineage.starts_with(lineage_header));
+    write_text(old / "lineage.csv", lineage);
+    nlohmann::json content = checkpoint_content(read_text(old / "checkpoint.json"), old.string());
+    content["lineage"] = {{"bytes", lineage.size()}, {"hash", fnv1a64_hex(lineage)}};
+    write_text(old / "checkpoint.json", checkpoint_text(content));
+
+    const CliResult resumed = run_morphogen("resume " + old.string() + " --generations 4");
+    INFO(resumed.output);
+    REQUIRE(resumed.code == 0);
+    CHECK(read_text(old / "lineage.csv") == five_columns(read_text(tmp.path / "whole" / "lineage.csv")));
+    CHECK(read_text(old / "archive.csv") == read_text(tmp.path / "whole" / "archive.csv"));
+    CHECK(history_without_times(old) == history_without_times(tmp.path / "whole"));
+    // and once more: the resumed run's own checkpoint resumes the same way
+    REQUIRE(run_morphogen("resume " + old.string() + " --generations 5").code == 0);
+    CHECK(lines_of(read_text(old / "lineage.csv")).back().find(',') != std::string::npos);
+    CHECK(cells_of(lines_of(read_text(old / "lineage.csv")).back()).size() == 5);
 }
