@@ -122,9 +122,7 @@ std::string encode_growth_animation_glb(const GrowthFrames& frames, double secon
                       std::to_string(static_cast<long long>(bytes)) + " bytes, more than the limit of " +
                       std::to_string(kMaxMeshFileBytes) + " for mesh files; use fewer frames");
 
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = "morphogen";
+    tinygltf::Model model = gltf::new_model();
     const int material = gltf::add_plant_material(model);
     tinygltf::Node root;
     root.name = "growth";
@@ -156,10 +154,7 @@ std::string encode_growth_animation_glb(const GrowthFrames& frames, double secon
         animation.channels.push_back(channel);
     }
     model.animations.push_back(animation);
-    tinygltf::Scene scene;
-    scene.nodes.push_back(0);
-    model.scenes.push_back(scene);
-    model.defaultScene = 0;
+    gltf::set_root_scene(model, 0);
     return gltf::glb_bytes(model, source);
 }
 

@@ -64,6 +64,20 @@ int add_accessor(tinygltf::Model& model, int view, int component, int type, std:
 
 }  // namespace
 
+tinygltf::Model new_model() {
+    tinygltf::Model model;
+    model.asset.version = "2.0";
+    model.asset.generator = "morphogen";
+    return model;
+}
+
+void set_root_scene(tinygltf::Model& model, int root) {
+    tinygltf::Scene scene;
+    scene.nodes.push_back(root);
+    model.scenes.push_back(scene);
+    model.defaultScene = static_cast<int>(model.scenes.size()) - 1;
+}
+
 int add_plant_material(tinygltf::Model& model) {
     tinygltf::Material material;
     material.name = "plant";

@@ -18,6 +18,12 @@ namespace morphogen::gltf {
 // a proper rotation, so orientation (and outward normals) are kept.
 inline Vec3 to_y_up(const Vec3& p) { return {p.x(), p.z(), -p.y()}; }
 
+// An empty glTF 2.0 model whose asset names morphogen as its generator.
+tinygltf::Model new_model();
+
+// Makes node `root` the one scene of `model`, and that scene the default.
+void set_root_scene(tinygltf::Model& model, int root);
+
 // Adds the double-sided green material every morphogen glTF uses; returns its index.
 int add_plant_material(tinygltf::Model& model);
 

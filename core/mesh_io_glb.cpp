@@ -8,9 +8,7 @@
 namespace morphogen::mesh_io_detail {
 
 std::string glb_bytes(MeshView mesh, const std::string& path) {
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = "morphogen";
+    tinygltf::Model model = gltf::new_model();
     const int material = gltf::add_plant_material(model);
 
     tinygltf::Node node;
@@ -18,10 +16,7 @@ std::string glb_bytes(MeshView mesh, const std::string& path) {
     // An empty mesh becomes a scene with one empty node (add_mesh returns -1).
     node.mesh = gltf::add_mesh(model, mesh, material, "morphogen");
     model.nodes.push_back(node);
-    tinygltf::Scene scene;
-    scene.nodes.push_back(0);
-    model.scenes.push_back(scene);
-    model.defaultScene = 0;
+    gltf::set_root_scene(model, 0);
     return gltf::glb_bytes(model, path);
 }
 
