@@ -2,15 +2,15 @@
 // checkpoint: each as .glb + .obj + .genome.json with species.csv, and
 // optionally the map of elites as a PNG (each occupied cell's plant at its
 // place on the descriptor grid, beside a fitness heatmap).
-#include "atomic_file.hpp"
-#include "checkpoint.hpp"
-#include "commands.hpp"
-#include "errors.hpp"
-#include "experiment_config.hpp"
-#include "growth_problem.hpp"
-#include "render.hpp"
-#include "run_directory.hpp"
-#include "run_records.hpp"
+#include "app/commands.hpp"
+#include "core/atomic_file.hpp"
+#include "core/errors.hpp"
+#include "report/render.hpp"
+#include "run/checkpoint.hpp"
+#include "run/experiment_config.hpp"
+#include "run/growth_problem.hpp"
+#include "run/run_directory.hpp"
+#include "run/run_records.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -187,7 +187,7 @@ void add_archive_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--top", options->top, "only the N fittest elites (0 = all)");
     cmd->add_option("--png", options->png, "draw the map of elites (grid archives) to this PNG file");
     cmd->add_option("--size", options->size, "pixels per map cell")->check(CLI::Range(32, 512));
-    cmd->callback([options, &selected] { selected = [options] { return run_archive(*options); }; });
+    select_on_pick(cmd, selected, options, run_archive);
 }
 
 }  // namespace morphogen

@@ -2,11 +2,11 @@
 // random genomes on one thread (with the time split between phases) and on
 // all threads, `--repeat` times in alternation; prints the median of each
 // figure (shared machines are noisy: one pass proves little).
-#include "commands.hpp"
-#include "experiment_config.hpp"
-#include "fma_peak.hpp"
-#include "genome_source.hpp"
-#include "growth.hpp"
+#include "app/commands.hpp"
+#include "app/fma_peak.hpp"
+#include "core/growth.hpp"
+#include "run/experiment_config.hpp"
+#include "run/genome_source.hpp"
 
 #include <nlohmann/json.hpp>
 #include <omp.h>
@@ -176,8 +176,7 @@ int run_bench(const BenchOptions& options) {
 void add_bench_command(CLI::App& root, CommandRunner& selected) {
     auto options = std::make_shared<BenchOptions>();
     CLI::App* cmd = root.add_subcommand("bench", "Measure growth speed (1 thread and all threads)");
-    cmd->add_option("--config", options->config, "Experiment config (JSON); defaults if omitted")
-        ->check(CLI::ExistingFile);
+    add_config_option(cmd, options->config);
     cmd->add_option("--genomes", options->genomes, "Number of random genomes to grow (default 32: one evolution batch)")
         ->check(CLI::Range(1, 100000));
     cmd->add_option("--repeat", options->repeat, "Passes to take medians over (default 5)")->check(CLI::Range(1, 1000));
@@ -185,7 +184,7 @@ void add_bench_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--threads", options->threads, "Threads of the parallel pass (0 = all cores)")
         ->check(CLI::Range(0, 4096));
     cmd->add_flag("--json", options->json, "Print one JSON object");
-    cmd->callback([options, &selected] { selected = [options] { return run_bench(*options); }; });
+    select_on_pick(cmd, selected, options, run_bench);
 }
 
 }  // namespace morphogen

@@ -1,14 +1,16 @@
 // `morphogen evolve CONFIG`: checks the config, makes a new run directory and
 // runs the GA (evolution_run.hpp).
-#include "atomic_file.hpp"
-#include "commands.hpp"
-#include "evolution_run.hpp"
-#include "exit_codes.hpp"
-#include "stop_signals.hpp"
-#include "archive_csv.hpp"
-#include "report.hpp"
-#include "resource_options.hpp"
-#include "run_records.hpp"
+#include "app/commands.hpp"
+#include "app/resource_options.hpp"
+#include "core/atomic_file.hpp"
+#include "report/end_of_run.hpp"
+#include "run/archive_csv.hpp"
+#include "run/evolution_run.hpp"
+#include "run/exit_codes.hpp"
+#include "run/run_records.hpp"
+#include "run/search_drivers.hpp"
+#include "run/stop_signals.hpp"
+#include "run/worker_threads.hpp"
 
 #include <chrono>
 #include <iostream>
@@ -60,7 +62,8 @@ int run_evolve(const EvolveOptions& o) {
                        RunState{},
                        AppendFile::create(paths.history, history_header_for(config.algorithm == Algorithm::map_elites)),
                        AppendFile::create(paths.lineage, lineage_header_for(config.qd.measure_names())),
-                       std::move(log)};
+                       std::move(log),
+                       std::nullopt};
     // The first checkpoint (no births yet) makes the directory resumable.
     session.state.config = config.resolved;
     session.state.seed = config.run.seed;
@@ -71,9 +74,7 @@ int run_evolve(const EvolveOptions& o) {
         write_file_atomically(paths.archive, archive_csv(session.state.elites->archive));
     }
     save_checkpoint(paths.checkpoint, session.state);
-    const int code = run_session(session, problem);
-    if (code == exit_code::ok && !o.no_report) report_at_end_of_run(paths.dir);
-    return code;
+    return run_session_then_report(session, problem, !o.no_report);
 }
 }  // namespace
 
@@ -88,7 +89,7 @@ void add_evolve_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_flag("--force", options->force, "reuse a non-empty run directory (removes its morphogen files)");
     cmd->add_flag("--no-report", options->no_report, "do not write RUN_DIR/report/ at the end (morphogen report)");
     add_resource_options(cmd, options->resources);
-    cmd->callback([options, &selected] { selected = [options] { return run_evolve(*options); }; });
+    select_on_pick(cmd, selected, options, run_evolve);
 }
 
 }  // namespace morphogen

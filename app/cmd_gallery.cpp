@@ -1,13 +1,13 @@
 // `morphogen gallery`: grow many random genomes in parallel (the paper's Figure 2).
-#include "commands.hpp"
-#include "errors.hpp"
-#include "experiment_config.hpp"
-#include "genome_source.hpp"
-#include "growth.hpp"
-#include "mesh_io.hpp"
-#include "mesh_stats.hpp"
-#include "render.hpp"
-#include "resource_options.hpp"
+#include "app/commands.hpp"
+#include "app/mesh_stats.hpp"
+#include "app/resource_options.hpp"
+#include "core/errors.hpp"
+#include "core/growth.hpp"
+#include "core/mesh_io.hpp"
+#include "report/render.hpp"
+#include "run/experiment_config.hpp"
+#include "run/genome_source.hpp"
 
 #include <omp.h>
 
@@ -57,7 +57,7 @@ int run_gallery(const GalleryOptions& options) {
     check_resource_limits(config, seed,
                           Workload{.threads = threads, .writers = options.format != "none" ? double(threads) : 0.0,
                                    .kept_meshes = double(options.count)},
-                          options.resources.limits(), options.config.empty() ? "default config" : options.config);
+                          options.resources.limits(), config_source(options.config));
     const std::filesystem::path dir(options.out);
     std::error_code ec;
     std::filesystem::create_directories(dir, ec);
@@ -139,8 +139,7 @@ int run_gallery(const GalleryOptions& options) {
 void add_gallery_command(CLI::App& root, CommandRunner& selected) {
     auto options = std::make_shared<GalleryOptions>();
     CLI::App* cmd = root.add_subcommand("gallery", "Grow many random genomes in parallel and summarise them");
-    cmd->add_option("--config", options->config, "Experiment config (JSON); defaults if omitted")
-        ->check(CLI::ExistingFile);
+    add_config_option(cmd, options->config);
     cmd->add_option("--count", options->count, "Number of random genomes")->required()->check(CLI::Range(1, 1'000'000));
     cmd->add_option("--seed", options->seed, "Seed of the first genome (genome i uses seed + i)")->required();
     cmd->add_option("--out", options->out, "Output directory")->required();
@@ -152,7 +151,7 @@ void add_gallery_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--columns", options->columns, "Columns of the contact sheet")->check(CLI::Range(1, 100));
     cmd->add_option("--threads", options->threads, "Threads (0 = all cores)")->check(CLI::Range(0, 4096));
     add_resource_options(cmd, options->resources);
-    cmd->callback([options, &selected] { selected = [options] { return run_gallery(*options); }; });
+    select_on_pick(cmd, selected, options, run_gallery);
 }
 
 }  // namespace morphogen

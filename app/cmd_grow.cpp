@@ -1,14 +1,14 @@
 // `morphogen grow`: grow one genome and write its mesh.
-#include "commands.hpp"
-#include "errors.hpp"
-#include "experiment_config.hpp"
-#include "genome_io.hpp"
-#include "genome_source.hpp"
-#include "growth.hpp"
-#include "growth_animation.hpp"
-#include "mesh_io.hpp"
-#include "mesh_stats.hpp"
-#include "resource_options.hpp"
+#include "app/commands.hpp"
+#include "app/mesh_stats.hpp"
+#include "app/resource_options.hpp"
+#include "core/errors.hpp"
+#include "core/genome_io.hpp"
+#include "core/growth.hpp"
+#include "core/mesh_io.hpp"
+#include "report/growth_animation.hpp"
+#include "run/experiment_config.hpp"
+#include "run/genome_source.hpp"
 
 #include <cctype>
 #include <chrono>
@@ -40,7 +40,7 @@ int run_grow(const GrowOptions& options) {
     ExperimentConfig config = load_experiment_config(options.config);
     if (options.steps) config.growth.steps = *options.steps;
     check_resource_limits(config, Workload{.scores = false, .writers = 1}, options.resources.limits(),
-                          options.config.empty() ? "default config" : options.config);
+                          config_source(options.config));
     mesh_format_from_path(options.output);  // refuse an unknown extension before growing
     const bool animating = !options.animate.empty() || !options.frames_obj.empty();
     const int frames = options.frames.value_or(default_animation_frames(config.growth.steps));
@@ -85,8 +85,7 @@ int run_grow(const GrowOptions& options) {
 void add_grow_command(CLI::App& root, CommandRunner& selected) {
     auto options = std::make_shared<GrowOptions>();
     CLI::App* cmd = root.add_subcommand("grow", "Grow one genome from a seed mesh and write the mesh");
-    cmd->add_option("--config", options->config, "Experiment config (JSON); defaults if omitted")
-        ->check(CLI::ExistingFile);
+    add_config_option(cmd, options->config);
     auto* random = cmd->add_option("--random", options->random_seed, "Grow a random genome from this seed");
     auto* genome = cmd->add_option("--genome", options->genome, "Grow this genome file")->check(CLI::ExistingFile);
     random->excludes(genome);
@@ -111,7 +110,7 @@ void add_grow_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_flag("--ply-double", options->mesh_options.ply_double,
                   "PLY output: 64-bit coordinates and normals (exact) instead of float32 (what WebGL viewers draw)");
     add_resource_options(cmd, options->resources);
-    cmd->callback([options, random, genome, animate, frames_obj, frames, frame_seconds, &selected] {
+    select_on_pick(cmd, selected, options, run_grow, [options, random, genome, animate, frames_obj, frames, frame_seconds] {
         if (random->count() + genome->count() != 1)
             throw CLI::RequiredError("grow needs one of --random SEED or --genome FILE");
         if (frames->count() > 0 && animate->count() + frames_obj->count() == 0)
@@ -121,7 +120,6 @@ void add_grow_command(CLI::App& root, CommandRunner& selected) {
         // Here, not CLI::Range: a range check lets NaN through.
         if (!(options->frame_seconds >= kMinSecondsPerFrame && options->frame_seconds <= kMaxSecondsPerFrame))
             throw CLI::ValidationError("--frame-seconds", "must be between 0.001 and 60");
-        selected = [options] { return run_grow(*options); };
     });
 }
 

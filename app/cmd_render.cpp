@@ -1,9 +1,9 @@
 // `morphogen render MESH... -o SHEET.png [--columns C] [--size PX] [--own-scale]`:
 // draws meshes (OBJ/PLY/OFF/STL) side by side on one PNG contact sheet.
-#include "commands.hpp"
-#include "exit_codes.hpp"
-#include "mesh_io.hpp"
-#include "render.hpp"
+#include "app/commands.hpp"
+#include "core/mesh_io.hpp"
+#include "report/render.hpp"
+#include "run/exit_codes.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -54,7 +54,7 @@ void add_render_command(CLI::App& root, CommandRunner& selected) {
         ->capture_default_str();
     cmd->add_flag("--own-scale", args->own_scale,
                   "Frame every mesh to fill its cell (sizes are then not comparable)");
-    cmd->callback([args, &selected] { selected = [args] { return run_render(*args); }; });
+    select_on_pick(cmd, selected, args, run_render);
 }
 
 }  // namespace morphogen

@@ -1,8 +1,8 @@
 // `morphogen report RUN_DIR [-o OUT_DIR]`: the static HTML report of a run
 // (report.hpp, docs/report.md).
-#include "commands.hpp"
-#include "exit_codes.hpp"
-#include "report.hpp"
+#include "app/commands.hpp"
+#include "report/report.hpp"
+#include "run/exit_codes.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -46,7 +46,7 @@ void add_report_command(CLI::App& root, CommandRunner& selected) {
         ->check(CLI::Range(0, 1000));
     cmd->add_option("--sheet", options->report.sheet_count, "generations on the contact sheet")
         ->check(CLI::Range(0, 100));
-    cmd->callback([options, &selected] { selected = [options] { return run_report(*options); }; });
+    select_on_pick(cmd, selected, options, run_report);
 }
 
 }  // namespace morphogen

@@ -1,17 +1,17 @@
 // `morphogen resume DIR`: continues a run from its checkpoint, exactly as if
 // it had never stopped.
-#include "atomic_file.hpp"
-#include "checkpoint_checks.hpp"
-#include "commands.hpp"
-#include "config_reader.hpp"
-#include "errors.hpp"
-#include "evolution_run.hpp"
-#include "exit_codes.hpp"
-#include "stop_signals.hpp"
-#include "archive_csv.hpp"
-#include "report.hpp"
-#include "resource_options.hpp"
-#include "run_records.hpp"
+#include "app/commands.hpp"
+#include "app/resource_options.hpp"
+#include "core/atomic_file.hpp"
+#include "core/config_reader.hpp"
+#include "core/errors.hpp"
+#include "report/end_of_run.hpp"
+#include "run/archive_csv.hpp"
+#include "run/checkpoint_checks.hpp"
+#include "run/evolution_run.hpp"
+#include "run/exit_codes.hpp"
+#include "run/run_records.hpp"
+#include "run/stop_signals.hpp"
 
 #include <filesystem>
 #include <iostream>
@@ -94,6 +94,8 @@ int run_resume(const ResumeOptions& o) {
     if (state.births() >= (config.run.generations + 1) * P) {
         std::cout << o.dir << ": generation " << config.run.generations
                   << " already reached; nothing to do (pass --generations to go further)\n";
+        // A report that failed (a full disk) or was never written is written now.
+        if (!o.no_report && report_is_stale(paths.dir)) report_at_end_of_run(paths.dir);
         return exit_code::ok;
     }
     // Check everything before changing anything.
@@ -115,12 +117,10 @@ int run_resume(const ResumeOptions& o) {
     for (const HistoryRow& row : state.history) history_text += format_history_row(row);
     AppendFile history = AppendFile::create(paths.history, history_text);
     AppendFile lineage = AppendFile::resume(paths.lineage, state.lineage_bytes, state.lineage_hash);
-    RunSession session{paths, config, std::move(state), std::move(history), std::move(lineage), std::move(log)};
-    session.lineage_descriptor_columns = lineage_descriptor_columns;
+    RunSession session{paths,           config, std::move(state), std::move(history), std::move(lineage),
+                       std::move(log), lineage_descriptor_columns};
     session.log.both->info("resuming {} after {} births", o.dir, session.state.births());
-    const int code = run_session(session, problem);
-    if (code == exit_code::ok && !o.no_report) report_at_end_of_run(paths.dir);
-    return code;
+    return run_session_then_report(session, problem, !o.no_report);
 }
 }  // namespace
 
@@ -133,7 +133,7 @@ void add_resume_command(CLI::App& root, CommandRunner& selected) {
     options->threads_option = cmd->add_option("--threads", options->threads, "worker threads (0 = all cores)");
     cmd->add_flag("--no-report", options->no_report, "do not write RUN_DIR/report/ at the end (morphogen report)");
     add_resource_options(cmd, options->resources);
-    cmd->callback([options, &selected] { selected = [options] { return run_resume(*options); }; });
+    select_on_pick(cmd, selected, options, run_resume);
 }
 
 }  // namespace morphogen

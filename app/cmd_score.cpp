@@ -1,14 +1,14 @@
 // `morphogen score`: the configured fitness and every metric of one mesh, read
 // from a file or grown from a genome.
-#include "commands.hpp"
-#include "config_reader.hpp"
-#include "errors.hpp"
-#include "experiment_config.hpp"
-#include "fitness.hpp"
-#include "genome_source.hpp"
-#include "growth.hpp"
-#include "mesh_io.hpp"
-#include "resource_options.hpp"
+#include "app/commands.hpp"
+#include "app/resource_options.hpp"
+#include "core/config_reader.hpp"
+#include "core/errors.hpp"
+#include "core/growth.hpp"
+#include "core/mesh_io.hpp"
+#include "fitness/fitness.hpp"
+#include "run/experiment_config.hpp"
+#include "run/genome_source.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -66,7 +66,7 @@ int run_score(const ScoreOptions& options) {
     const std::string source = options.mesh.empty() ? options.genome + " (grown)" : options.mesh;
     if (options.mesh.empty())  // a grown mesh: bounded by the config
         check_resource_limits(config, Workload{.metrics = true}, options.resources.limits(),
-                              options.config.empty() ? "default config" : options.config);
+                              config_source(options.config));
     const MeshArrays mesh = options.mesh.empty() ? grow_genome(config, options.genome) : read_mesh(options.mesh);
     require_scorable(mesh, source);
     const FitnessOutcome outcome = config.fitness->evaluate(mesh.view());
@@ -116,10 +116,9 @@ void add_score_command(CLI::App& root, CommandRunner& selected) {
                     "Fitness section as inline JSON, replacing the config's, e.g. '{\"type\": \"light\"}'");
     cmd->add_flag("--json", options->json, "Print one JSON object instead of text");
     add_resource_options(cmd, options->resources);
-    cmd->callback([options, mesh, genome, &selected] {
+    select_on_pick(cmd, selected, options, run_score, [mesh, genome] {
         if (mesh->count() + genome->count() != 1)
             throw CLI::RequiredError("score needs one of --mesh FILE or --genome FILE");
-        selected = [options] { return run_score(*options); };
     });
 }
 

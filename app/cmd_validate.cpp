@@ -2,12 +2,12 @@
 // once (with its key path), or "valid". Exit 0 if all are valid, else 2 for an
 // invalid config, 3 for an unreadable file (the config or its seed mesh), 4 for
 // a seed mesh that is not usable (the first of these wins over later ones, 2 over all).
-#include "commands.hpp"
-#include "errors.hpp"
-#include "exit_codes.hpp"
-#include "experiment_config.hpp"
-#include "resource_options.hpp"
-#include "seeds.hpp"
+#include "app/commands.hpp"
+#include "app/resource_options.hpp"
+#include "core/errors.hpp"
+#include "core/seeds.hpp"
+#include "run/exit_codes.hpp"
+#include "run/experiment_config.hpp"
 
 #include <iostream>
 #include <memory>
@@ -63,7 +63,7 @@ void add_validate_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("config", options->configs, "experiment config files (JSON)")->required();
     cmd->add_flag("--resolved", options->print_resolved, "also print each config with its defaults filled in");
     add_resource_options(cmd, options->resources);
-    cmd->callback([options, &selected] { selected = [options] { return run_validate(*options); }; });
+    select_on_pick(cmd, selected, options, run_validate);
 }
 
 }  // namespace morphogen

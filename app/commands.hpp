@@ -4,7 +4,11 @@
 // and maps exceptions to exit codes (exit_codes.hpp).
 #include <CLI/CLI.hpp>
 
+#include <cstddef>
 #include <functional>
+#include <memory>
+#include <string>
+#include <type_traits>
 
 namespace morphogen {
 
@@ -20,5 +24,28 @@ void add_validate_command(CLI::App& root, CommandRunner& selected);
 void add_score_command(CLI::App& root, CommandRunner& selected);
 void add_archive_command(CLI::App& root, CommandRunner& selected);
 void add_report_command(CLI::App& root, CommandRunner& selected);
+
+// What the commands' registrations share.
+
+// When `cmd` is picked, `selected` becomes run(*options); `check`, if given,
+// first vets the options together (throwing a CLI::Error).
+template <class Options, class Run, class Check = std::nullptr_t>
+void select_on_pick(CLI::App* cmd, CommandRunner& selected, std::shared_ptr<Options> options, Run run,
+                    Check check = nullptr) {
+    cmd->callback([options, run, check, &selected] {
+        if constexpr (!std::is_same_v<Check, std::nullptr_t>) check();
+        selected = [options, run] { return run(*options); };
+    });
+}
+
+// --config FILE: an experiment config; what it omits (or everything, without
+// the option) takes the defaults.
+inline CLI::Option* add_config_option(CLI::App* cmd, std::string& path,
+                                      const std::string& help = "Experiment config (JSON); defaults if omitted") {
+    return cmd->add_option("--config", path, help)->check(CLI::ExistingFile);
+}
+
+// How messages name the config of --config: its path, or "default config".
+inline std::string config_source(const std::string& path) { return path.empty() ? "default config" : path; }
 
 }  // namespace morphogen

@@ -1,4 +1,4 @@
-#include "fma_peak.hpp"
+#include "app/fma_peak.hpp"
 
 #include <ctime>
 

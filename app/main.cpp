@@ -2,15 +2,15 @@
 // and turns errors into a one-line reason on stderr and a meaningful exit code.
 // Under mpirun/srun (cluster/launch.hpp) `evolve` and `resume` run as one job:
 // rank 0 runs the command, the other ranks score its genomes (cluster/).
-#include "commands.hpp"
-#include "errors.hpp"
-#include "evolution_run.hpp"
-#include "exit_codes.hpp"
-#include "launch.hpp"
-#include "protocol.hpp"
-#include "remote_evaluator.hpp"
-#include "worker.hpp"
-#include "world.hpp"
+#include "app/commands.hpp"
+#include "cluster/launch.hpp"
+#include "cluster/protocol.hpp"
+#include "cluster/remote_evaluator.hpp"
+#include "cluster/worker.hpp"
+#include "cluster/world.hpp"
+#include "core/errors.hpp"
+#include "run/evolution_run.hpp"
+#include "run/exit_codes.hpp"
 
 #include <CLI/CLI.hpp>
 

@@ -1,4 +1,4 @@
-#include "mesh_stats.hpp"
+#include "app/mesh_stats.hpp"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "resource_options.hpp"
+#include "app/resource_options.hpp"
 
 namespace morphogen {
 

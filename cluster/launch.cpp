@@ -1,4 +1,4 @@
-#include "launch.hpp"
+#include "cluster/launch.hpp"
 
 #include <charconv>
 #include <cstdlib>

@@ -5,7 +5,7 @@
 // signed zeros included), so a run's files are the same for any number of
 // processes. All processes of a job run the same executable on the same
 // architecture, so native byte order is used.
-#include "individual.hpp"
+#include "evolution/individual.hpp"
 
 #include <cstdint>
 #include <stdexcept>

@@ -1,7 +1,7 @@
-#include "remote_evaluator.hpp"
+#include "cluster/remote_evaluator.hpp"
 
-#include "protocol.hpp"
-#include "stop_signals.hpp"
+#include "cluster/protocol.hpp"
+#include "run/stop_signals.hpp"
 
 #include <algorithm>
 #include <cstdio>

@@ -8,9 +8,9 @@
 // Hand-out is dynamic: every worker gets a chunk of genomes (its thread
 // count, at most batch/workers), and whoever sends results back gets the next
 // chunk. Which process scores which genome never changes a result.
-#include "batch.hpp"
-#include "experiment_config.hpp"
-#include "world.hpp"
+#include "cluster/world.hpp"
+#include "evolution/batch.hpp"
+#include "run/experiment_config.hpp"
 
 #include <filesystem>
 #include <memory>

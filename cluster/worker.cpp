@@ -1,10 +1,10 @@
-#include "worker.hpp"
+#include "cluster/worker.hpp"
 
-#include "batch.hpp"
-#include "evolution_run.hpp"
-#include "experiment_config.hpp"
-#include "growth_problem.hpp"
-#include "protocol.hpp"
+#include "cluster/protocol.hpp"
+#include "evolution/batch.hpp"
+#include "run/experiment_config.hpp"
+#include "run/growth_problem.hpp"
+#include "run/worker_threads.hpp"
 
 #include <nlohmann/json.hpp>
 #include <omp.h>
@@ -28,6 +28,7 @@ std::string start_session(Serving& serving, const std::string& config_text) {
             read_experiment_config(nlohmann::json::parse(config_text), "config from rank 0");
         serving.problem = std::make_unique<GrowthProblem>(config);
         serving.threads = resolve_threads(config.run.threads);
+        start_worker_threads(serving.threads);
         serving.problem->prepare(serving.threads);
         return {};
     } catch (const std::exception& e) {

@@ -5,7 +5,7 @@
 // a single-process run, so the same bits) until rank 0 says quit. SIGINT and
 // SIGTERM are ignored here: rank 0 decides when the job stops (it finishes
 // the batch and checkpoints first), and tells every worker.
-#include "world.hpp"
+#include "cluster/world.hpp"
 
 namespace morphogen::cluster {
 

@@ -1,4 +1,4 @@
-#include "world.hpp"
+#include "cluster/world.hpp"
 
 #include <mpi.h>
 

@@ -1,6 +1,6 @@
 // World in a build without MPI: main() never makes one (a launched process
 // exits 2 first), but the code that uses it still links.
-#include "world.hpp"
+#include "cluster/world.hpp"
 
 #include <exception>
 #include <stdexcept>

@@ -1,6 +1,6 @@
-#include "atomic_file.hpp"
+#include "core/atomic_file.hpp"
 
-#include "errors.hpp"
+#include "core/errors.hpp"
 
 #include <fcntl.h>
 #include <sys/stat.h>

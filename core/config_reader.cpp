@@ -1,7 +1,7 @@
-#include "config_reader.hpp"
+#include "core/config_reader.hpp"
 
-#include "errors.hpp"
-#include "json_text.hpp"
+#include "core/errors.hpp"
+#include "core/json_text.hpp"
 
 #include <algorithm>
 #include <cerrno>
@@ -114,7 +114,12 @@ std::string show_number(double v) {
 
 ObjectReader::ObjectReader(const json* object, std::string path, ConfigIssues& issues)
     : object_(object), path_(std::move(path)), issues_(issues) {
-    if (object_ != nullptr && object_->is_null()) object_ = nullptr;
+    // null is refused like any other non-object: {"network": null} is a
+    // mistake, not a request for the defaults (leave the key out for those).
+    if (object_ != nullptr && object_->is_null()) {
+        issues_.add(path_, "expected an object, got null (leave the section out to take its defaults)");
+        object_ = nullptr;
+    }
     if (object_ != nullptr && !object_->is_object()) {
         issues_.add(path_, "expected an object, got " + type_name(*object_) + " " + show(*object_));
         object_ = nullptr;

@@ -1,7 +1,7 @@
 #pragma once
 // The one small exception hierarchy of morphogen. Messages name the bad value
 // and where it came from (file, key path, line), so a user can fix it without
-// reading code. Exit codes of the CLI map from these types (app/exit_codes.hpp).
+// reading code. Exit codes of the CLI map from these types (run/exit_codes.hpp).
 #include <stdexcept>
 #include <string>
 

@@ -1,6 +1,6 @@
-#include "gather_kernel.hpp"
+#include "core/gather_kernel.hpp"
 
-#include "vector4.hpp"
+#include "core/vector4.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 #pragma once
-// The gather phase (ALGORITHM.md §3): each vertex's network inputs from the
+// The gather phase (docs/algorithm.md §4.2): each vertex's network inputs from the
 // previous outputs — its own, the mean and the population standard deviation
 // over its neighbours — with the last four overwritten by its growth direction
 // and height. Compiled for x86-64-v3 and baseline, picked at run time.

@@ -1,9 +1,9 @@
-#include "genome_io.hpp"
+#include "core/genome_io.hpp"
 
-#include "atomic_file.hpp"
-#include "config_reader.hpp"
-#include "errors.hpp"
-#include "json_text.hpp"
+#include "core/atomic_file.hpp"
+#include "core/config_reader.hpp"
+#include "core/errors.hpp"
+#include "core/json_text.hpp"
 
 #include <cmath>
 #include <fstream>

@@ -1,8 +1,8 @@
 #pragma once
-// Genome files (ALGORITHM.md §2):
+// Genome files (docs/algorithm.md §6.4):
 //   {"format": "morphogen-genome", "version": 1, "layers": [45, 30, 15], "params": [...]}
 // Numbers are written with 17 significant digits, so a round trip is exact.
-#include "network.hpp"
+#include "core/network.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,8 +1,8 @@
 // glTF building blocks (see gltf_mesh.hpp).
-#include "gltf_mesh.hpp"
+#include "core/gltf_mesh.hpp"
 
-#include "errors.hpp"
-#include "mesh_io.hpp"
+#include "core/errors.hpp"
+#include "core/vertex_normals.hpp"
 
 #include <Eigen/Core>
 

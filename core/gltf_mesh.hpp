@@ -1,10 +1,10 @@
 #pragma once
 // glTF building blocks shared by the GLB mesh writer (mesh_io_glb.cpp) and the
-// growth animation (app/growth_animation.cpp): the plant material, meshes and
+// growth animation (report/growth_animation.cpp): the plant material, meshes and
 // float arrays appended to one buffer, and the binary (.glb) encoding.
 // Meshes are stored Y-up (glTF's convention) as float32 positions with
 // min/max (the validator requires them), smooth normals and uint32 indices.
-#include "mesh.hpp"
+#include "core/mesh.hpp"
 
 #include <tiny_gltf.h>
 

@@ -1,7 +1,7 @@
-#include "growth.hpp"
+#include "core/growth.hpp"
 
-#include "errors.hpp"
-#include "gather_kernel.hpp"
+#include "core/errors.hpp"
+#include "core/gather_kernel.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -120,7 +120,7 @@ std::uint64_t tick_overhead() {
     return overhead;
 }
 
-// What the network's input source needs: the gather of §3 for a block of
+// What the network's input source needs: the gather of docs/algorithm.md §4.2 for a block of
 // vertices, and (when timing) an estimate of the ticks it took. Only one
 // block in `sample_every` is timed: a fenced read costs about 27 ns here and
 // drains the pipeline, and two per block of 8 vertices would slow the timed

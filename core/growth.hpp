@@ -1,11 +1,11 @@
 #pragma once
-// Growth (ALGORITHM.md §3-§4): the network, copied at every vertex, grows a
+// Growth (docs/algorithm.md §4-§5): the network, copied at every vertex, grows a
 // seed mesh step by step: think, move, split, flip. Deterministic: the same
 // network, parameters and seed give the same mesh bit for bit.
-#include "growth_params.hpp"
-#include "mesh.hpp"
-#include "network.hpp"
-#include "seeds.hpp"
+#include "core/growth_params.hpp"
+#include "core/mesh.hpp"
+#include "core/network.hpp"
+#include "core/seeds.hpp"
 
 #include <Eigen/Core>
 
@@ -55,7 +55,7 @@ public:
 
     // The state before step 0: the seed with every output 0.5.
     GrowthState start(const Seed& seed) const;
-    // One timestep t (§4) applied to `state`.
+    // One timestep t (docs/algorithm.md §5) applied to `state`.
     void step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times = nullptr) const;
     // start() then params.steps steps.
     GrowthState grow(const Seed& seed, GrowthWorkspace& workspace, PhaseTimes* times = nullptr,
@@ -64,7 +64,7 @@ public:
 private:
     // The neighbour lists (CSR) of the mesh as it stands.
     void build_neighbours(const TriMesh& mesh, GrowthWorkspace& workspace) const;
-    // Gather (§3) and network (§4.1): new outputs for every vertex. When
+    // Gather (docs/algorithm.md §4.2) and network (§5.1): new outputs for every vertex. When
     // timed, returns the gather's share of the time, estimated from a
     // sample of its blocks (else 0).
     double think(GrowthState& state, GrowthWorkspace& workspace, bool timed) const;

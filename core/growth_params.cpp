@@ -1,6 +1,6 @@
-#include "growth_params.hpp"
+#include "core/growth_params.hpp"
 
-#include "network.hpp"
+#include "core/network.hpp"
 
 #include <limits>
 
@@ -31,7 +31,9 @@ GrowthParams read_growth_params(ObjectReader& reader) {
     p.min_valence = static_cast<int>(reader.integer("min_valence", p.min_valence, 3, 1000));
     p.height_scale = reader.number("height_scale", p.height_scale, 0.0, big, /*min_exclusive=*/true);
     p.seed_mesh = reader.string("seed_mesh", p.seed_mesh);
-    p.seed_radius = reader.number("seed_radius", p.seed_radius, 0.0, big, /*min_exclusive=*/true);
+    // Beyond these the seed's area-weighted normals (products of two
+    // coordinates) overflow or vanish; the mesh files' own bound is 1e9.
+    p.seed_radius = reader.number("seed_radius", p.seed_radius, kMinSeedRadius, kMaxSeedRadius);
     if (p.seed_mesh.empty()) reader.issues().add(reader.path_of("seed_mesh"), "must name a built-in seed or a mesh file");
     reader.finish();
     return p;

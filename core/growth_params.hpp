@@ -1,7 +1,7 @@
 #pragma once
-// The `network` and `growth` config sections (ALGORITHM.md; every constant a
+// The `network` and `growth` config sections (docs/algorithm.md §5.6; every constant a
 // key, defaults as documented in docs/config.md and configs/schema.json).
-#include "config_reader.hpp"
+#include "core/config_reader.hpp"
 
 #include <string>
 #include <vector>
@@ -13,6 +13,10 @@ struct NetworkParams {
     std::vector<int> hidden{30};  // network.hidden
     std::vector<int> layers() const;  // [3N, hidden..., N]
 };
+
+// The radii a built-in seed may have (growth.seed_radius).
+inline constexpr double kMinSeedRadius = 1e-6;
+inline constexpr double kMaxSeedRadius = 1e6;
 
 struct GrowthParams {
     int steps = 200;
@@ -26,7 +30,7 @@ struct GrowthParams {
     int min_valence = 4;
     double height_scale = 10.0;
     std::string seed_mesh = "icosahedron";  // built-in name or a mesh file path
-    double seed_radius = 1.0;
+    double seed_radius = 1.0;  // in [kMinSeedRadius, kMaxSeedRadius]
 };
 
 // Read a section; problems are added to reader.issues(), defaults fill gaps.

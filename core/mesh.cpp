@@ -1,6 +1,6 @@
-#include "mesh.hpp"
+#include "core/mesh.hpp"
 
-#include "errors.hpp"
+#include "core/errors.hpp"
 
 #include <algorithm>
 #include <bit>
@@ -24,7 +24,7 @@ std::string join_defects(const std::vector<std::string>& defects, std::size_t li
     return text;
 }
 
-// §4.4's first flip test, |AC| < |BD|: one definition for every caller, so
+// docs/algorithm.md §5.4's first flip test, |AC| < |BD|: one definition for every caller, so
 // the flip pass's marks and try_flip can never round differently.
 inline bool diagonal_shorter(const Vec3& pa, const Vec3& pb, const Vec3& pc, const Vec3& pd) {
     return (pc - pa).squaredNorm() < (pd - pb).squaredNorm();
@@ -206,7 +206,7 @@ bool TriMesh::flip_candidate(int h) const {
 int TriMesh::flip_pass(const FlipCriteria& criteria) {
     // Only a candidate (visited from its lower face, diagonal AC shorter than
     // BD) can flip, and few are: mark them all in one sweep, then
-    // run try_flip on the marked half-edges in the order of §4.4 (h = 3f + e).
+    // run try_flip on the marked half-edges in the order of docs/algorithm.md §5.4 (h = 3f + e).
     // Positions do not move during the pass, so a mark stays right until a flip
     // rewrites the quad around an edge: the half-edges of the two flipped faces
     // and their four outer partners. Their marks are recomputed, for those not

@@ -38,7 +38,7 @@ struct MeshArrays {
     MeshView view() const { return {positions, faces}; }
 };
 
-// The conditions of ALGORITHM.md §4.4 under which an edge flip is taken.
+// The conditions of docs/algorithm.md §5.4 under which an edge flip is taken.
 struct FlipCriteria {
     double min_normal_dot = 0.8660254037844387;  // cos(flip_max_angle_deg)
     int min_valence = 4;                          // both B and D need valence > this
@@ -95,18 +95,18 @@ public:
     }
     bool adjacent(int a, int b) const;
 
-    // Splits face f at `point` (ALGORITHM.md §4.3): adds vertex v = num_vertices();
+    // Splits face f at `point` (docs/algorithm.md §5.3): adds vertex v = num_vertices();
     // f = (a,b,c) becomes (a,b,v) and (b,c,v), (c,a,v) are appended in that order.
     // Returns v.
     int split_face(int f, const Vec3& point);
 
-    // Tries to flip local edge e of face f (ALGORITHM.md §4.4): with
+    // Tries to flip local edge e of face f (docs/algorithm.md §5.4): with
     // B = f[e], D = f[e+1], A = f[e+2] and g the face across B-D with third
     // vertex C, flips only if f < g and every criterion holds; then
     // f := (A,B,C), g := (C,D,A). Returns whether it flipped; never throws.
     bool try_flip(int f, int e, const FlipCriteria& criteria);
 
-    // One flip pass (ALGORITHM.md §4.4): try_flip(f, e) for f = 0..F-1 and
+    // One flip pass (docs/algorithm.md §5.4): try_flip(f, e) for f = 0..F-1 and
     // e = 0, 1, 2 in order, each flip taking effect at once. Returns the
     // number of flips.
     int flip_pass(const FlipCriteria& criteria);
@@ -124,8 +124,8 @@ private:
         opposite_[h2] = h1;
     }
     // Whether half-edge h could flip in a pass: h < opposite(h) (the edge's
-    // lower face visits it) and the other diagonal is shorter (§4.4's first
-    // test). Every flip needs this; few edges have it.
+    // lower face visits it) and the other diagonal is shorter (the first
+    // test of docs/algorithm.md §5.4). Every flip needs this; few edges have it.
     bool flip_candidate(int h) const;
     // Rebuilds opposite/valence/outgoing from faces; returns defects found.
     std::vector<std::string> build_topology();

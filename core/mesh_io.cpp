@@ -4,10 +4,10 @@
 // failed write is detected in one place and the partial file is removed.
 // Readers load the whole file and parse it from memory; every error names the
 // file (and line for text).
-#include "mesh_io.hpp"
+#include "core/mesh_io.hpp"
 
-#include "errors.hpp"
-#include "mesh_io_detail.hpp"
+#include "core/errors.hpp"
+#include "core/mesh_io_detail.hpp"
 
 #include <cerrno>
 #include <cmath>
@@ -120,20 +120,6 @@ MeshArrays read_mesh(const std::string& path) {
     const MeshFormat format = mesh_format_from_path(path);
     if (format == MeshFormat::glb) fail(path, "reading GLB is not supported (use OBJ, PLY, OFF or STL)");
     return parse_mesh(read_file(path), format, path);
-}
-
-std::vector<Vec3> vertex_normals(MeshView mesh) {
-    std::vector<Vec3> normals(mesh.positions.size(), Vec3::Zero());
-    for (const Face& f : mesh.faces) {
-        const Vec3 n = (mesh.positions[f[1]] - mesh.positions[f[0]])
-                           .cross(mesh.positions[f[2]] - mesh.positions[f[0]]);
-        for (int v : f) normals[v] += n;  // area-weighted: |n| is twice the area
-    }
-    for (Vec3& n : normals) {
-        const double len = n.norm();
-        n = len > 0 && std::isfinite(len) ? Vec3(n / len) : Vec3::Zero();
-    }
-    return normals;
 }
 
 }  // namespace morphogen

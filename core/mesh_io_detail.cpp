@@ -1,7 +1,7 @@
 // Shared internals of the mesh files (see mesh_io_detail.hpp).
-#include "mesh_io_detail.hpp"
+#include "core/mesh_io_detail.hpp"
 
-#include "errors.hpp"
+#include "core/errors.hpp"
 
 #include <cctype>
 #include <charconv>

@@ -2,7 +2,9 @@
 // Internals shared by the per-format mesh files (mesh_io_*.cpp): error helpers,
 // a line/token reader for the text formats, number parsing and formatting.
 // Not part of the public interface (see mesh_io.hpp).
-#include "mesh_io.hpp"
+#include "core/mesh.hpp"
+#include "core/mesh_file_types.hpp"
+#include "core/vertex_normals.hpp"
 
 #include <algorithm>
 #include <bit>

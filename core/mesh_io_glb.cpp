@@ -1,7 +1,7 @@
 // GLB (glTF 2.0 binary) writer, Y-up, with smooth vertex normals.
-#include "mesh_io_detail.hpp"
+#include "core/mesh_io_detail.hpp"
 
-#include "gltf_mesh.hpp"
+#include "core/gltf_mesh.hpp"
 
 #include <string>
 

@@ -1,6 +1,6 @@
 // OBJ: the exact text record with smooth normals (writer) and a reader of
 // v/f lines.
-#include "mesh_io_detail.hpp"
+#include "core/mesh_io_detail.hpp"
 
 #include <string>
 

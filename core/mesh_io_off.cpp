@@ -2,7 +2,7 @@
 // The writer stays plain OFF, without normals: NOFF (normals after each
 // vertex) is a variant that many simple OFF readers refuse (they want the
 // magic word "OFF") or misread (they take three numbers per vertex line).
-#include "mesh_io_detail.hpp"
+#include "core/mesh_io_detail.hpp"
 
 #include <limits>
 #include <string>

@@ -1,6 +1,6 @@
 // PLY: binary little-endian writer (float32 or double, with normals); reader
 // of ascii and both binary encodings.
-#include "mesh_io_detail.hpp"
+#include "core/mesh_io_detail.hpp"
 
 #include <cstdint>
 #include <limits>

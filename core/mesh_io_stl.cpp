@@ -1,6 +1,6 @@
 // STL: binary writer; reader of binary and ASCII STL that welds corners at
 // exactly equal positions into shared vertices (STL stores none).
-#include "mesh_io_detail.hpp"
+#include "core/mesh_io_detail.hpp"
 
 #include <cstdint>
 #include <string>

@@ -1,6 +1,6 @@
-#include "network.hpp"
+#include "core/network.hpp"
 
-#include "errors.hpp"
+#include "core/errors.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,8 +1,8 @@
 #pragma once
-// The cellular network of ALGORITHM.md §2: one feed-forward net, identical at
+// The cellular network of docs/algorithm.md §4: one feed-forward net, identical at
 // every vertex. Layer sizes [3N, hidden..., N]; each neuron computes
 //   sigmoid(-threshold + sum_k (in_k - 0.5) * weight_k).
-// Genome layout: for each layer l = 1..L, for each neuron j, its weights
+// Genome layout (docs/algorithm.md §6.1): for each layer l = 1..L, for each neuron j, its weights
 // weight_j0..weight_j(n-1) then its threshold.
 #include <cstddef>
 #include <span>
@@ -10,7 +10,7 @@
 #include <utility>
 #include <vector>
 
-#include "network_kernel.hpp"
+#include "core/network_kernel.hpp"
 
 namespace morphogen {
 

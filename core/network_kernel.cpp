@@ -1,6 +1,6 @@
-#include "network_kernel.hpp"
+#include "core/network_kernel.hpp"
 
-#include "vector4.hpp"
+#include "core/vector4.hpp"
 
 #include <algorithm>
 #include <bit>

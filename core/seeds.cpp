@@ -1,7 +1,7 @@
-#include "seeds.hpp"
+#include "core/seeds.hpp"
 
-#include "errors.hpp"
-#include "mesh_io.hpp"
+#include "core/errors.hpp"
+#include "core/mesh_io.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,9 +1,9 @@
 #pragma once
-// Seed meshes (ALGORITHM.md §5). Built-in seeds have radius `radius` and are
+// Seed meshes (docs/algorithm.md §3). Built-in seeds have radius `radius` and are
 // moved so their lowest point is at z = 0; their vertex and face order is
-// fixed (docs/algorithm.md lists it, tests pin it) because it decides the split
+// fixed (docs/algorithm.md §3.2 lists it, tests pin it) because it decides the split
 // and flip order. A file seed is used as it is.
-#include "mesh.hpp"
+#include "core/mesh.hpp"
 
 #include <string>
 #include <vector>

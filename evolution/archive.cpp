@@ -1,6 +1,6 @@
-#include "archive.hpp"
+#include "evolution/archive.hpp"
 
-#include "cvt.hpp"
+#include "evolution/cvt.hpp"
 
 #include <algorithm>
 #include <cmath>

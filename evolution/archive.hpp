@@ -1,5 +1,5 @@
 #pragma once
-// A MAP-Elites archive (ALGORITHM.md §8): cells over a space of behaviour
+// A MAP-Elites archive (docs/algorithm.md §9.2-§9.5): cells over a space of behaviour
 // descriptors, each holding at most one elite, the best individual found
 // whose descriptors fall in it. Two ways to map descriptors to a cell:
 //
@@ -13,7 +13,7 @@
 // In both, values outside [min, max] land in the edge cells. A non-finite
 // descriptor, or a wrong number of them, places nowhere. Nothing here knows
 // what the descriptors measure.
-#include "individual.hpp"
+#include "evolution/individual.hpp"
 
 #include <cstdint>
 #include <map>
@@ -63,7 +63,7 @@ public:
     std::vector<std::uint64_t> bins_of(std::span<const double> descriptors) const;
 
     enum class Placement { rejected, filled, replaced };
-    // ALGORITHM.md §8: a valid child that has a cell enters it if the cell is
+    // docs/algorithm.md §9.5: a valid child that has a cell enters it if the cell is
     // empty (filled) or its fitness is >= the elite's (replaced: on equal
     // fitness the newcomer wins). Otherwise, or if invalid, rejected.
     Placement insert(const Individual& child);

@@ -1,4 +1,4 @@
-#include "archive_stats.hpp"
+#include "evolution/archive_stats.hpp"
 
 namespace morphogen {
 

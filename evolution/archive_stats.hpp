@@ -1,7 +1,7 @@
 #pragma once
-// Summary of a MAP-Elites archive for the history (ALGORITHM.md §8).
-#include "archive.hpp"
-#include "population_stats.hpp"
+// Summary of a MAP-Elites archive for the history (docs/algorithm.md §9.7).
+#include "evolution/archive.hpp"
+#include "evolution/population_stats.hpp"
 
 #include <cstdint>
 

@@ -1,4 +1,4 @@
-#include "batch.hpp"
+#include "evolution/batch.hpp"
 
 #include <omp.h>
 

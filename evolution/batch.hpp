@@ -1,11 +1,11 @@
 #pragma once
-// The batch step both algorithms share (ALGORITHM.md §7): the children of a
+// The batch step both algorithms share (docs/algorithm.md §8.4): the children of a
 // run of consecutive births are conceived from a frozen snapshot and evaluated
 // in parallel (OpenMP, dynamic schedule); the caller then inserts them in
 // birth order. Each child depends only on (snapshot, seed, birth index), so
 // the result is the same for every thread count.
-#include "individual.hpp"
-#include "problem.hpp"
+#include "evolution/individual.hpp"
+#include "evolution/problem.hpp"
 
 #include <cstdint>
 #include <functional>

@@ -1,6 +1,6 @@
-#include "cvt.hpp"
+#include "evolution/cvt.hpp"
 
-#include "rng.hpp"
+#include "evolution/rng.hpp"
 
 #include <omp.h>
 

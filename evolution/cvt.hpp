@@ -1,6 +1,6 @@
 #pragma once
 // Centroids of a centroidal Voronoi tessellation (CVT) of the unit cube
-// [0,1]^d, drawn from the run's seed alone (ALGORITHM.md §8, docs/map-elites.md):
+// [0,1]^d, drawn from the run's seed alone (docs/algorithm.md §9.3, docs/map-elites.md):
 //
 // - samples: S = max(kCvtMinSamples, kCvtSamplesPerCell * cells) points, all
 //   from the one stream RandomStream(seed, kCvtStream) (an index no birth

@@ -1,5 +1,5 @@
 #pragma once
-// Parameters of the steady-state GA (ALGORITHM.md §7; the `evolution` config
+// Parameters of the steady-state GA (docs/algorithm.md §8.8; the `evolution` config
 // section). Defaults are the documented ones (docs/config.md, configs/schema.json).
 namespace morphogen {
 

@@ -1,6 +1,6 @@
-#include "ga_state_json.hpp"
+#include "evolution/ga_state_json.hpp"
 
-#include "state_json_read.hpp"
+#include "evolution/state_json_read.hpp"
 
 #include <cmath>
 #include <set>

@@ -7,9 +7,9 @@
 // Genomes: without a blob (checkpoint format 1) an individual's parameters
 // are a JSON array "params"; with one (format 2, genome_blob.hpp) they go to
 // the blob and the individual holds "genome": <index> instead.
-#include "ga_params.hpp"
-#include "genome_blob.hpp"
-#include "steady_state.hpp"
+#include "evolution/ga_params.hpp"
+#include "evolution/genome_blob.hpp"
+#include "evolution/steady_state.hpp"
 
 #include <nlohmann/json.hpp>
 

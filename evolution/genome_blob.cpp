@@ -1,4 +1,4 @@
-#include "genome_blob.hpp"
+#include "evolution/genome_blob.hpp"
 
 #include <bit>
 #include <cmath>

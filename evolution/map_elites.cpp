@@ -1,7 +1,7 @@
-#include "map_elites.hpp"
+#include "evolution/map_elites.hpp"
 
-#include "batch.hpp"
-#include "operators.hpp"
+#include "evolution/batch.hpp"
+#include "evolution/operators.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,20 +1,21 @@
 #pragma once
-// The MAP-Elites driver (ALGORITHM.md §8), shaped like SteadyStateGA: step()
+// The MAP-Elites driver (docs/algorithm.md §9), shaped like SteadyStateGA: step()
 // performs one batch. Births [0, P) are random genomes (generation 0); every
 // later birth draws parent 1 and parent 2 uniformly from the occupied cells
 // of the archive as it stood before the batch (cells in index order, the
 // index from the birth's own stream; parent 2 is used only on crossover),
-// then crossover and mutation as in §7 (operators.hpp: conceive_birth). The
+// then crossover and mutation as in docs/algorithm.md §8.3 (operators.hpp: conceive_birth). The
 // batch is bred in parallel and its children inserted in birth order. So the
 // state after any number of steps is the same for every thread count.
 //
 // A birth after generation 0 while the archive is still empty (every earlier
 // child was invalid) is a random genome, as in generation 0.
-#include "archive.hpp"
-#include "batch.hpp"
-#include "individual.hpp"
-#include "operators.hpp"
-#include "problem.hpp"
+#include "evolution/archive.hpp"
+#include "evolution/batch.hpp"
+#include "evolution/generation_count.hpp"
+#include "evolution/individual.hpp"
+#include "evolution/operators.hpp"
+#include "evolution/problem.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -52,7 +53,7 @@ struct EliteBatchOutcome {
     std::uint64_t generation_new_cells = 0;    // if so: cells first filled in that generation
 };
 
-class MapElites {
+class MapElites : public GenerationCount<MapElites> {
 public:
     // Throws std::invalid_argument for parameters out of range or blocks that
     // do not tile the problem's parameters. `state` is trusted to match.
@@ -67,12 +68,8 @@ public:
     const MapElitesState& state() const { return state_; }
     const MapElitesParams& params() const { return params_; }
     std::uint64_t seed() const { return seed_; }
-    std::uint64_t completed_generations() const { return state_.births / population(); }
-    bool at_generation_end() const { return state_.births > 0 && state_.births % population() == 0; }
-    std::uint64_t births_to_finish(std::uint64_t generation) const { return (generation + 1) * population(); }
 
 private:
-    std::uint64_t population() const { return static_cast<std::uint64_t>(params_.population); }
     BirthRules rules() const {
         return {population(), params_.init_range, params_.crossover, params_.mutation_rate, params_.mutation_sigma};
     }

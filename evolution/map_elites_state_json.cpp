@@ -1,7 +1,7 @@
-#include "map_elites_state_json.hpp"
+#include "evolution/map_elites_state_json.hpp"
 
-#include "ga_state_json.hpp"
-#include "state_json_read.hpp"
+#include "evolution/ga_state_json.hpp"
+#include "evolution/state_json_read.hpp"
 
 #include <cmath>
 #include <set>

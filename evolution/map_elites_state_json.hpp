@@ -6,8 +6,8 @@
 //                "elites": [{"cell": c, "descriptors": [...], <individual>}, ...] (cell order)}}
 // The CVT centroids are stored so a resume never recomputes them. Genomes:
 // inline or in a blob, as in ga_state_json.hpp.
-#include "genome_blob.hpp"
-#include "map_elites.hpp"
+#include "evolution/genome_blob.hpp"
+#include "evolution/map_elites.hpp"
 
 #include <nlohmann/json.hpp>
 

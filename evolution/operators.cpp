@@ -1,4 +1,4 @@
-#include "operators.hpp"
+#include "evolution/operators.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,12 +1,12 @@
 #pragma once
-// The GA's operators as free functions (ALGORITHM.md §7), each drawing only
+// The GA's operators as free functions (docs/algorithm.md §8.2-§8.5), each drawing only
 // from the RandomStream it is given, so a birth is a pure function of
 // (population snapshot, parameters, seed, birth index). Variation and the
-// birth itself (conceive_birth) are shared with MAP-Elites (§8), which only
+// birth itself (conceive_birth) are shared with MAP-Elites (§9.4), which only
 // picks parents differently.
-#include "ga_params.hpp"
-#include "individual.hpp"
-#include "rng.hpp"
+#include "evolution/ga_params.hpp"
+#include "evolution/individual.hpp"
+#include "evolution/rng.hpp"
 
 #include <cstdint>
 #include <functional>

@@ -1,4 +1,4 @@
-#include "population_stats.hpp"
+#include "evolution/population_stats.hpp"
 
 #include <algorithm>
 #include <vector>

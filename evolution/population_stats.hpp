@@ -1,7 +1,7 @@
 #pragma once
 // Summary of a population for the history: over valid members only (an
 // invalid member has no score); every field is empty when none is valid.
-#include "individual.hpp"
+#include "evolution/individual.hpp"
 
 #include <optional>
 #include <span>

@@ -2,7 +2,7 @@
 // What the GA optimises: a map from parameter vectors to scores (larger is
 // better). The GA turns exceptions and non-finite scores into invalid
 // individuals, so evaluate() may throw.
-#include "individual.hpp"
+#include "evolution/individual.hpp"
 
 #include <span>
 #include <vector>

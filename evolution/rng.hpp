@@ -60,7 +60,7 @@ private:
     std::uint64_t counter_ = 0;
 };
 
-// `count` parameters uniform in [-range, +range) (ALGORITHM.md §2 random genomes).
+// `count` parameters uniform in [-range, +range) (docs/algorithm.md §6.3 random genomes).
 inline std::vector<double> random_parameters(std::size_t count, double range, RandomStream& stream) {
     std::vector<double> params(count);
     for (double& p : params) p = stream.uniform(-range, range);

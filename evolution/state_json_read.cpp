@@ -1,4 +1,4 @@
-#include "state_json_read.hpp"
+#include "evolution/state_json_read.hpp"
 
 #include <stdexcept>
 

@@ -1,7 +1,7 @@
-#include "steady_state.hpp"
+#include "evolution/steady_state.hpp"
 
-#include "batch.hpp"
-#include "operators.hpp"
+#include "evolution/batch.hpp"
+#include "evolution/operators.hpp"
 
 #include <cmath>
 #include <stdexcept>

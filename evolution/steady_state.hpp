@@ -1,5 +1,5 @@
 #pragma once
-// The steady-state GA driver (ALGORITHM.md §7). step() performs one batch:
+// The steady-state GA driver (docs/algorithm.md §8). step() performs one batch:
 // it conceives every child of the batch from the population as it stood
 // before the batch, evaluates them in parallel (OpenMP, dynamic schedule),
 // and inserts them in birth order. Because every child's randomness comes
@@ -8,10 +8,11 @@
 //
 // Generation g (g >= 0) is births [g*P, (g+1)*P); generation 0 is the random
 // initial population. Batches never cross a generation boundary.
-#include "batch.hpp"
-#include "ga_params.hpp"
-#include "individual.hpp"
-#include "problem.hpp"
+#include "evolution/batch.hpp"
+#include "evolution/ga_params.hpp"
+#include "evolution/generation_count.hpp"
+#include "evolution/individual.hpp"
+#include "evolution/problem.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -36,7 +37,7 @@ struct BatchOutcome {
     std::uint64_t generation_invalid = 0;  // if so: invalid births in that generation
 };
 
-class SteadyStateGA {
+class SteadyStateGA : public GenerationCount<SteadyStateGA> {
 public:
     // Throws std::invalid_argument for parameters out of range or blocks that
     // do not tile the problem's parameters. `state` is trusted to match (see
@@ -52,16 +53,8 @@ public:
     const GaState& state() const { return state_; }
     const GaParams& params() const { return params_; }
     std::uint64_t seed() const { return seed_; }
-    // Generations completed so far (generation 0 included).
-    std::uint64_t completed_generations() const { return state_.births / population(); }
-    // True right after the last birth of a generation.
-    bool at_generation_end() const { return state_.births > 0 && state_.births % population() == 0; }
-    // Births needed to complete generation `generation`.
-    std::uint64_t births_to_finish(std::uint64_t generation) const { return (generation + 1) * population(); }
 
 private:
-    std::uint64_t population() const { return static_cast<std::uint64_t>(params_.population); }
-
     GaParams params_;
     std::uint64_t seed_;
     Problem& problem_;

@@ -1,13 +1,13 @@
-// Canopy by z-buffer rasterisation (ALGORITHM.md §6). Point-in-triangle uses
+// Canopy by z-buffer rasterisation (docs/algorithm.md §10.1). Point-in-triangle uses
 // Shewchuk's filtered orientation: the double determinant's sign is trusted
 // when it clears the error bound, else CGAL decides exactly (rare). So the
 // edge rule is exact: a centre on a shared edge is inside both triangles, no
 // centre falls through a crack, and the result equals ray shooting on CGAL's
 // exact predicates (canopy_reference.cpp).
-#include "canopy.hpp"
+#include "fitness/canopy.hpp"
 
-#include "cgal_geometry.hpp"
-#include "measures.hpp"
+#include "fitness/cgal_geometry.hpp"
+#include "fitness/measures.hpp"
 
 #include <algorithm>
 #include <cmath>

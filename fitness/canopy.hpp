@@ -1,12 +1,12 @@
 #pragma once
-// The canopy heuristic of ALGORITHM.md §6 ("over10area"):
+// The canopy heuristic of docs/algorithm.md §10.1 ("over10area"):
 //   canopy = area { (x,y) : H(x,y) > height },  H = max z of the surface above (x,y),
 // sampled on square cells of side `cell`: cell (i,j) covers
 // [i*cell, (i+1)*cell) x [j*cell, (j+1)*cell) and counts when H at its centre
 // ((i+0.5)*cell, (j+0.5)*cell) exceeds `height`. A centre on a triangle's edge
 // or vertex is inside it (exact predicates decide); triangles whose
 // xy-projection has zero area are skipped. Score = counted cells x cell^2.
-#include "mesh.hpp"
+#include "core/mesh.hpp"
 
 #include <cstdint>
 #include <utility>
@@ -27,7 +27,7 @@ using CellIndex = std::pair<std::int64_t, std::int64_t>;  // (i, j)
 
 // The most grid cells one evaluation rasterises (one byte each). A config
 // whose plants could need more is refused before a run
-// (app/resource_estimate.hpp), unless limits are lifted.
+// (run/resource_estimate.hpp), unless limits are lifted.
 inline constexpr std::int64_t canopy_max_cells = std::int64_t{1} << 28;
 
 // The score, by z-buffer rasterisation: only triangles whose highest vertex is

@@ -1,12 +1,12 @@
-// The canopy by vertical ray shooting (ALGORITHM.md §6's second
+// The canopy by vertical ray shooting (docs/algorithm.md §10.1's second
 // implementation): independent of the rasteriser except for the grid
 // definition, so tests can compare the two cell for cell. Hit points are
 // constructed exactly: double-precision ray/triangle constructions go wrong on
 // triangles seen almost edge-on from above.
-#include "canopy.hpp"
+#include "fitness/canopy.hpp"
 
-#include "cgal_geometry.hpp"
-#include "measures.hpp"
+#include "fitness/cgal_geometry.hpp"
+#include "fitness/measures.hpp"
 
 #include <algorithm>
 #include <cmath>

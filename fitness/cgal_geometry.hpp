@@ -1,9 +1,9 @@
 #pragma once
-// The plain interface to the CGAL geometry this library needs (DESIGN.md: CGAL
+// The plain interface to the CGAL geometry this library needs (CGAL
 // compiles slowly, so it is included only by cgal_ray_caster.cpp and
 // cgal_self_intersection.cpp). Exact predicates, inexact constructions
 // (CGAL::Exact_predicates_inexact_constructions_kernel).
-#include "mesh.hpp"
+#include "core/mesh.hpp"
 
 #include <memory>
 #include <optional>
@@ -21,7 +21,7 @@ class RayCaster {
 public:
     enum class Faces {
         non_degenerate,  // every face that is a proper triangle in 3-D
-        non_vertical,    // only faces whose xy-projection has non-zero area (canopy §6)
+        non_vertical,    // faces whose xy-projection has non-zero area (docs/algorithm.md §10.1)
     };
     RayCaster(MeshView mesh, Faces which);
     ~RayCaster();

@@ -1,7 +1,7 @@
-#include "descriptors.hpp"
+#include "fitness/descriptors.hpp"
 
-#include "config_reader.hpp"
-#include "measures.hpp"
+#include "core/config_reader.hpp"
+#include "fitness/measures.hpp"
 
 #include <cmath>
 #include <numbers>

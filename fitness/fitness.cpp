@@ -1,8 +1,8 @@
 // The Fitness wrapper: every check on a score happens here, once.
-#include "fitness.hpp"
+#include "fitness/fitness.hpp"
 
-#include "cgal_geometry.hpp"
-#include "measures.hpp"
+#include "fitness/cgal_geometry.hpp"
+#include "fitness/measures.hpp"
 
 #include <cmath>
 #include <sstream>

@@ -1,7 +1,7 @@
-#include "light.hpp"
+#include "fitness/light.hpp"
 
-#include "cgal_geometry.hpp"
-#include "measures.hpp"
+#include "fitness/cgal_geometry.hpp"
+#include "fitness/measures.hpp"
 
 #include <Eigen/Geometry>
 

@@ -7,7 +7,7 @@
 // the mesh (CGAL AABB tree) has z >= min_height: the mesh shades itself. The
 // score is the mean over suns, an area comparable with the canopy's: a flat
 // horizontal square under a vertical sun captures its own area.
-#include "mesh.hpp"
+#include "core/mesh.hpp"
 
 #include <vector>
 
@@ -23,7 +23,7 @@ struct LightParams {
 };
 
 // The most rays one sun casts in one evaluation. A config whose plants could
-// need more is refused before a run (app/resource_estimate.hpp), unless
+// need more is refused before a run (run/resource_estimate.hpp), unless
 // limits are lifted.
 inline constexpr double light_max_rays_per_sun = double(1 << 26);
 

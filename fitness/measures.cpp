@@ -1,4 +1,4 @@
-#include "measures.hpp"
+#include "fitness/measures.hpp"
 
 #include <Eigen/Geometry>
 

@@ -1,9 +1,9 @@
 // The metrics report of a mesh (score command, run records).
-#include "fitness.hpp"
+#include "fitness/fitness.hpp"
 
-#include "canopy.hpp"
-#include "cgal_geometry.hpp"
-#include "measures.hpp"
+#include "fitness/canopy.hpp"
+#include "fitness/cgal_geometry.hpp"
+#include "fitness/measures.hpp"
 
 #include <optional>
 

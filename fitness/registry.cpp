@@ -1,12 +1,12 @@
 // The registry of fitness functions by name: each entry reads and checks its
 // own keys (ObjectReader, so every issue names its key path) and builds the
 // function. A new function is one class and one row of kTypes.
-#include "fitness.hpp"
+#include "fitness/fitness.hpp"
 
-#include "canopy.hpp"
-#include "cgal_geometry.hpp"
-#include "light.hpp"
-#include "measures.hpp"
+#include "fitness/canopy.hpp"
+#include "fitness/cgal_geometry.hpp"
+#include "fitness/light.hpp"
+#include "fitness/measures.hpp"
 
 #include <utility>
 

@@ -1,5 +1,5 @@
 // Fuzz target "checkpoint": the bytes as checkpoint.json, read by
-// app/checkpoint.hpp load_checkpoint (as `resume` reads it).
+// run/checkpoint.hpp load_checkpoint (as `resume` reads it).
 //
 // Nearly every mutation breaks the content hash, which stops the reader early.
 // So when the first line is JSON holding a "content", that content is also
@@ -7,9 +7,9 @@
 // its genomes when the line announces them, else format 1) and read: what a
 // hand edit with the hash recomputed looks like, and the only way to reach
 // the content checks.
-#include "checkpoint.hpp"
-#include "fuzz_target.hpp"
-#include "path_readers.hpp"
+#include "fuzz/fuzz_target.hpp"
+#include "fuzz/path_readers.hpp"
+#include "run/checkpoint.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,10 +1,10 @@
 // Fuzz target "config": the bytes as an experiment config, read the way
 // `morphogen validate` reads one (core/config_reader.hpp parse_json_text, then
-// app/experiment_config.hpp read_experiment_config, then the seed check).
-#include "config_reader.hpp"
-#include "experiment_config.hpp"
-#include "fuzz_target.hpp"
-#include "seeds.hpp"
+// run/experiment_config.hpp read_experiment_config, then the seed check).
+#include "core/config_reader.hpp"
+#include "core/seeds.hpp"
+#include "fuzz/fuzz_target.hpp"
+#include "run/experiment_config.hpp"
 
 namespace morphogen::fuzz {
 std::string input_from_file(const std::string&, std::string bytes) { return bytes; }

@@ -1,8 +1,8 @@
 // Fuzz target "genome": the bytes as a genome file (core/genome_io.hpp), read
 // the way load_genome reads one, but from memory.
-#include "config_reader.hpp"
-#include "fuzz_target.hpp"
-#include "genome_io.hpp"
+#include "core/config_reader.hpp"
+#include "core/genome_io.hpp"
+#include "fuzz/fuzz_target.hpp"
 
 #include <bit>
 #include <cstdint>

@@ -6,10 +6,10 @@
 // 'f' OFF, 's' STL (any other byte: its value mod 4 in that order). Corpus
 // files in tests/corpus/mesh/ are plain mesh files; the replay and
 // scripts/fuzz.sh prefix the byte their extension names (input_from_file).
-#include "fuzz_target.hpp"
-#include "mesh.hpp"
-#include "path_readers.hpp"
-#include "seeds.hpp"
+#include "core/mesh.hpp"
+#include "core/seeds.hpp"
+#include "fuzz/fuzz_target.hpp"
+#include "fuzz/path_readers.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,4 +1,4 @@
-#include "fuzz_target.hpp"
+#include "fuzz/fuzz_target.hpp"
 
 #include <cxxabi.h>
 

@@ -10,7 +10,7 @@
 // The same target sources are linked two ways: with libFuzzer (clang, build-fuzz/,
 // MORPHOGEN_FUZZ=ON) and with replay_main.cpp (any compiler, the normal build),
 // which calls LLVMFuzzerTestOneInput on every file of tests/corpus/<target>/.
-#include "errors.hpp"
+#include "core/errors.hpp"
 
 #include <cstddef>
 #include <cstdint>

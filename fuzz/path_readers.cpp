@@ -1,6 +1,6 @@
-#include "path_readers.hpp"
+#include "fuzz/path_readers.hpp"
 
-#include "fuzz_target.hpp"
+#include "fuzz/fuzz_target.hpp"
 
 #include <unistd.h>
 

@@ -1,11 +1,11 @@
 #pragma once
 // How fuzz targets hand bytes to readers: meshes go to the in-memory
 // parse_mesh (core/mesh_io.hpp, the same parser read_mesh uses); the
-// checkpoint reader takes a path (app/checkpoint.hpp load_checkpoint), so its
+// checkpoint reader takes a path (run/checkpoint.hpp load_checkpoint), so its
 // bytes are written to a per-process scratch file in /dev/shm first.
-#include "checkpoint.hpp"
-#include "mesh.hpp"
-#include "mesh_io.hpp"
+#include "core/mesh.hpp"
+#include "core/mesh_io.hpp"
+#include "run/checkpoint.hpp"
 
 #include <string_view>
 

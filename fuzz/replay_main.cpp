@@ -6,7 +6,7 @@
 // Files whose names start with "README" or "." are skipped.
 //
 //   replay_<target> DIR_OR_FILE...
-#include "fuzz_target.hpp"
+#include "fuzz/fuzz_target.hpp"
 
 #include <unistd.h>
 

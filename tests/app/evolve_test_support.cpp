@@ -1,6 +1,6 @@
-#include "app/evolve_test_support.hpp"
+#include "tests/app/evolve_test_support.hpp"
 
-#include "checkpoint.hpp"
+#include "run/checkpoint.hpp"
 
 #include <catch2/catch.hpp>
 

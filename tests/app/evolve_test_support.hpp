@@ -2,7 +2,7 @@
 // Helpers for the evolve/resume tests: running the morphogen executable and
 // comparing run files while ignoring timings (files and temporary directories
 // come from support/temp_dir.hpp).
-#include "support/temp_dir.hpp"
+#include "tests/support/temp_dir.hpp"
 
 #include <nlohmann/json.hpp>
 

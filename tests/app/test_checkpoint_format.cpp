@@ -1,17 +1,17 @@
-// Checkpoint format 2 (app/checkpoint.hpp): genomes as exact little-endian
+// Checkpoint format 2 (run/checkpoint.hpp): genomes as exact little-endian
 // doubles after the JSON header line. Exact bits, format-1 files still loading
 // and resuming, refusal of every damaged byte of the binary part and of
 // contradicting genome references, and the size of a large archive. A hidden
 // benchmark ("[.][bench]") measures save and load times for docs/performance.md.
-#include "app/evolve_test_support.hpp"
-#include "atomic_file.hpp"
-#include "checkpoint.hpp"
-#include "errors.hpp"
-#include "experiment_config.hpp"
-#include "ga_state_json.hpp"
-#include "map_elites_state_json.hpp"
-#include "network.hpp"
-#include "run_records.hpp"
+#include "core/atomic_file.hpp"
+#include "core/errors.hpp"
+#include "core/network.hpp"
+#include "evolution/ga_state_json.hpp"
+#include "evolution/map_elites_state_json.hpp"
+#include "run/checkpoint.hpp"
+#include "run/experiment_config.hpp"
+#include "run/run_records.hpp"
+#include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // End-to-end tests of grow, gallery and bench through the real executable.
-#include "evolve_test_support.hpp"
-#include "mesh.hpp"
-#include "mesh_io.hpp"
+#include "core/mesh.hpp"
+#include "core/mesh_io.hpp"
+#include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

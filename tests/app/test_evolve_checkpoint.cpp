@@ -1,11 +1,11 @@
 // Checkpoint files: exact round trip, and refusal of every truncation and
 // every single changed byte, of other versions and formats, and of contents
 // that contradict themselves or lineage.csv though their hash matches.
-#include "app/evolve_test_support.hpp"
-#include "checkpoint.hpp"
-#include "checkpoint_checks.hpp"
-#include "errors.hpp"
-#include "fnv_hash.hpp"
+#include "core/errors.hpp"
+#include "run/checkpoint.hpp"
+#include "run/checkpoint_checks.hpp"
+#include "run/fnv_hash.hpp"
+#include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -176,7 +176,9 @@ TEST_CASE("a checkpoint that contradicts itself or lineage.csv is refused and le
         {[&](nlohmann::json& c) { c["ga"]["best"]["fitness"] = best + 1; }, "ga.best"},
         {[](nlohmann::json& c) { c["ga"]["best"] = nullptr; }, "ga.best is null"},
         {[](nlohmann::json& c) { c["ga"]["population"][2]["fitness"] = c["ga"]["population"][2]["fitness"].get<double>() - 0.25; },
-         "differs from its lineage.csv row"},
+         "but the population it holds gives"},
+        {[](nlohmann::json& c) { c["history"][0]["mean"] = c["history"][0]["mean"].get<double>() + 1e-9; },
+         "history[0].mean is"},
         {[&](nlohmann::json& c) { c["ga"]["population"][child]["parent2"] = nullptr, c["ga"]["population"][child]["parent1"] = nullptr; },
          "differs from its lineage.csv row"},
         {[&](nlohmann::json& c) { c["lineage"] = {{"bytes", shorter.size()}, {"hash", fnv1a64_hex(shorter)}}; },
@@ -220,6 +222,10 @@ TEST_CASE("invalid births and the best are checked against lineage.csv", "[app][
         row.generation = g;
         row.births = 2 * (g + 1);
         row.invalid = 1;
+        // what the population held at the generation's end: {1} then {1, 2}
+        row.best = g == 0 ? 1.0 : 2.0;
+        row.mean = row.median = g == 0 ? 1.0 : 1.5;
+        row.worst = 1.0;
         state.history.push_back(row);
     }
     REQUIRE_NOTHROW(check_checkpoint_against_lineage(state, lineage, 2));

@@ -2,7 +2,7 @@
 // the run directory, determinism across thread counts, exact resume after a
 // stop, a Ctrl-C or a kill -9, refusal of damaged checkpoints and mismatched
 // configs.
-#include "app/evolve_test_support.hpp"
+#include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
 

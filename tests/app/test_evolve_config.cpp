@@ -2,11 +2,11 @@
 // suggestions, invalid JSON with line and column, overrides, and
 // configs/schema.json kept in step with the reader (validation of the
 // shipped configs, defaults and ranges compared key by key).
-#include "app/evolve_test_support.hpp"
-#include "errors.hpp"
-#include "descriptors.hpp"
-#include "experiment_config.hpp"
-#include "resource_estimate.hpp"
+#include "core/errors.hpp"
+#include "fitness/descriptors.hpp"
+#include "run/experiment_config.hpp"
+#include "run/resource_estimate.hpp"
+#include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
 #include <valijson/adapters/nlohmann_json_adapter.hpp>
@@ -401,4 +401,53 @@ TEST_CASE("bad descriptor configs are refused all at once with their key paths",
     // the same archive in a GA-sized grid fits
     const ExperimentConfig small = read_experiment_config(me(R"(, "descriptors": [{"measure": "height", "min": 0, "max": 1, "bins": 20}])"), "s");
     CHECK_NOTHROW(check_resource_limits(small, evolution_workload(small), limits, "s.json"));
+}
+
+TEST_CASE("a section that is null is refused, not taken for its defaults", "[app][config]") {
+    for (const char* section : {"network", "growth", "fitness", "evolution", "run", "descriptors", "archive"}) {
+        INFO(section);
+        json document = json::object();
+        document[section] = nullptr;
+        CHECK_THAT(config_errors(document), Catch::Contains("test.json: " + std::string(section) + ": "));
+    }
+    CHECK_THAT(config_errors(json(nullptr)), Catch::Contains("expected an object, got null"));
+    // a command-line override does not turn a null run section into an object
+    TempDir tmp("config-null-run");
+    write_text(tmp.path / "c.json", R"({"run": null})");
+    ConfigOverrides overrides;
+    overrides.seed = 3;
+    CHECK_THROWS_WITH(load_experiment_config((tmp.path / "c.json").string(), overrides),
+                      Catch::Contains("run: expected an object, got null"));
+}
+
+TEST_CASE("growth.seed_radius beyond what a seed can be is a config error naming the key and range", "[app][config]") {
+    for (double radius : {1e300, 1e308, 1e-300, 1e7, 1e-7}) {
+        INFO(radius);
+        json document = json::object();
+        document["growth"]["seed_radius"] = radius;
+        const std::string errors = config_errors(document);
+        CHECK_THAT(errors, Catch::Contains("growth.seed_radius:"));
+        CHECK_THAT(errors, Catch::Contains("out of range [1e-06, 1e+06]"));
+    }
+    TempDir tmp("config-seed-radius");
+    write_text(tmp.path / "c.json", R"({"growth": {"seed_radius": 1e300}})");
+    const CliResult result = run_morphogen("validate " + q(tmp.path / "c.json"));
+    CHECK(result.code == 2);
+    CHECK_THAT(result.output, Catch::Contains("growth.seed_radius"));
+}
+
+TEST_CASE("run.threads far beyond the machine and the batch is capped, with a warning, and the bytes stay",
+          "[app][config]") {
+    TempDir tmp("threads-cap");
+    write_text(tmp.path / "c.json", tiny_config(2));
+    const CliResult many = run_morphogen("evolve " + q(tmp.path / "c.json") + " --out " + q(tmp.path / "many") +
+                                         " --no-report --threads 4096");
+    INFO(many.output);
+    REQUIRE(many.code == 0);
+    CHECK_THAT(many.output, Catch::Contains("run.threads 4096 is more than can run at once here"));
+    CHECK_THAT(many.output, Catch::Contains("batch 3): using "));
+    const CliResult one = run_morphogen("evolve " + q(tmp.path / "c.json") + " --out " + q(tmp.path / "one") +
+                                        " --no-report --threads 1");
+    REQUIRE(one.code == 0);
+    check_same_results(tmp.path / "many", tmp.path / "one");
 }

@@ -1,8 +1,8 @@
 // history.csv / lineage.csv rows and the append-only files behind them.
-#include "app/evolve_test_support.hpp"
-#include "append_file.hpp"
-#include "errors.hpp"
-#include "run_records.hpp"
+#include "core/errors.hpp"
+#include "run/append_file.hpp"
+#include "run/run_records.hpp"
+#include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,11 +1,11 @@
-// Resource limits (app/resource_estimate.hpp): the estimates against measured
+// Resource limits (run/resource_estimate.hpp): the estimates against measured
 // facts of real growths and runs, the refusals, and the options that lift them.
-#include "evolve_test_support.hpp"
-#include "experiment_config.hpp"
-#include "genome_source.hpp"
-#include "growth.hpp"
-#include "network.hpp"
-#include "resource_estimate.hpp"
+#include "core/growth.hpp"
+#include "core/network.hpp"
+#include "run/experiment_config.hpp"
+#include "run/genome_source.hpp"
+#include "run/resource_estimate.hpp"
+#include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
 

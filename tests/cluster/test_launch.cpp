@@ -1,5 +1,5 @@
 // Launcher detection (cluster/launch.hpp) reads only the environment.
-#include "launch.hpp"
+#include "cluster/launch.hpp"
 
 #include <catch2/catch.hpp>
 

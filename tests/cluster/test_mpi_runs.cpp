@@ -3,7 +3,7 @@
 // number, SIGTERM to mpirun, a killed worker. mpirun runs with --oversubscribe
 // (more processes than this machine's cores) and Open MPI's run-as-root
 // permission (CI runs as root). Skipped, with a message, in a build without MPI.
-#include "app/evolve_test_support.hpp"
+#include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
 

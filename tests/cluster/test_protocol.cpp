@@ -1,6 +1,6 @@
 // The MPI messages' encoding (cluster/protocol.hpp): evaluations come back
 // with every bit, and a malformed message is refused, never read past its end.
-#include "protocol.hpp"
+#include "cluster/protocol.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
-#include "config_reader.hpp"
-#include "errors.hpp"
-#include "growth_params.hpp"
+#include "core/config_reader.hpp"
+#include "core/errors.hpp"
+#include "core/growth_params.hpp"
 
 #include <catch2/catch.hpp>
 

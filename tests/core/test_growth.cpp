@@ -1,7 +1,7 @@
-#include "errors.hpp"
-#include "growth.hpp"
-#include "support/reference_growth.hpp"
-#include "support/test_meshes.hpp"
+#include "core/errors.hpp"
+#include "core/growth.hpp"
+#include "tests/support/reference_growth.hpp"
+#include "tests/support/test_meshes.hpp"
 
 #include <catch2/catch.hpp>
 

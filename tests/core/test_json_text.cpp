@@ -1,10 +1,10 @@
 // The strict JSON reader (core/json_text.hpp) and the readers built on it:
 // configs (ConfigError), genome files (IoError). Hostile input first.
-#include "config_reader.hpp"
-#include "errors.hpp"
-#include "genome_io.hpp"
-#include "json_text.hpp"
-#include "support/temp_dir.hpp"
+#include "core/config_reader.hpp"
+#include "core/errors.hpp"
+#include "core/genome_io.hpp"
+#include "core/json_text.hpp"
+#include "tests/support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>
 

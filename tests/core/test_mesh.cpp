@@ -1,6 +1,6 @@
-#include "mesh.hpp"
-#include "seeds.hpp"
-#include "support/test_meshes.hpp"
+#include "core/mesh.hpp"
+#include "core/seeds.hpp"
+#include "tests/support/test_meshes.hpp"
 
 #include <catch2/catch.hpp>
 

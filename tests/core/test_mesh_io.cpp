@@ -1,10 +1,10 @@
 // Mesh files: exact round trips (OBJ, PLY, OFF), STL/GLB structure, and a
 // clear IoError naming the file for every malformed input.
-#include "support/temp_dir.hpp"
-#include "errors.hpp"
-#include "mesh.hpp"
-#include "mesh_io.hpp"
-#include "mesh_io_detail.hpp"
+#include "core/errors.hpp"
+#include "core/mesh.hpp"
+#include "core/mesh_io.hpp"
+#include "core/mesh_io_detail.hpp"
+#include "tests/support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <tiny_gltf.h>

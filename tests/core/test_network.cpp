@@ -1,9 +1,9 @@
-#include "errors.hpp"
-#include "genome_io.hpp"
-#include "network.hpp"
-#include "network_kernel.hpp"
-#include "support/temp_dir.hpp"
-#include "support/test_meshes.hpp"
+#include "core/errors.hpp"
+#include "core/genome_io.hpp"
+#include "core/network.hpp"
+#include "core/network_kernel.hpp"
+#include "tests/support/temp_dir.hpp"
+#include "tests/support/test_meshes.hpp"
 
 #include <catch2/catch.hpp>
 

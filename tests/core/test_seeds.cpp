@@ -1,7 +1,7 @@
-#include "errors.hpp"
-#include "seeds.hpp"
-#include "support/temp_dir.hpp"
-#include "support/test_meshes.hpp"
+#include "core/errors.hpp"
+#include "core/seeds.hpp"
+#include "tests/support/temp_dir.hpp"
+#include "tests/support/test_meshes.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -41,7 +41,7 @@ TEST_CASE("built-in seeds: valid, outward, radius, resting on the ground", "[see
 }
 
 TEST_CASE("built-in seed order is pinned", "[seeds]") {
-    // The order decides the split and flip order; docs/algorithm.md lists it.
+    // The order decides the split and flip order; docs/algorithm.md §3.2 lists it.
     const TriMesh ico = builtin_seed_mesh("icosahedron", 1.0);
     REQUIRE(ico.num_vertices() == 12);
     REQUIRE(ico.num_faces() == 20);

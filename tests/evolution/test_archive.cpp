@@ -1,8 +1,8 @@
 // Archives: grid cells and clipping, CVT nearest centroid and centroids,
 // the insertion rule, and the archive's statistics.
-#include "archive.hpp"
-#include "archive_stats.hpp"
-#include "cvt.hpp"
+#include "evolution/archive.hpp"
+#include "evolution/archive_stats.hpp"
+#include "evolution/cvt.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,10 +1,10 @@
 // The batch step with a remote evaluator (batch.hpp: BatchEvaluator, what
 // cluster/ implements over MPI): the same states and outcomes as the local
 // OpenMP path, whatever order the evaluator scores genomes in.
-#include "evolution/toy_problems.hpp"
-#include "ga_state_json.hpp"
-#include "map_elites.hpp"
-#include "steady_state.hpp"
+#include "evolution/ga_state_json.hpp"
+#include "evolution/map_elites.hpp"
+#include "evolution/steady_state.hpp"
+#include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
 

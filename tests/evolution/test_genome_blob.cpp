@@ -1,7 +1,7 @@
 // Genomes outside the JSON of a search state (evolution/genome_blob.hpp): the
 // exact bits back, and refusal of a blob or a reference that does not fit.
-#include "ga_state_json.hpp"
-#include "genome_blob.hpp"
+#include "evolution/ga_state_json.hpp"
+#include "evolution/genome_blob.hpp"
 
 #include <catch2/catch.hpp>
 

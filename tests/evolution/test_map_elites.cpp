@@ -1,12 +1,12 @@
 // The MAP-Elites driver: determinism across thread counts, generation 0,
 // parents from the archive, invalid children, the archive's invariants.
-#include "archive_stats.hpp"
-#include "batch.hpp"
-#include "cvt.hpp"
-#include "evolution/toy_problems.hpp"
-#include "ga_state_json.hpp"
-#include "map_elites.hpp"
-#include "operators.hpp"
+#include "evolution/archive_stats.hpp"
+#include "evolution/batch.hpp"
+#include "evolution/cvt.hpp"
+#include "evolution/ga_state_json.hpp"
+#include "evolution/map_elites.hpp"
+#include "evolution/operators.hpp"
+#include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // Unit tests of the GA operators: selection, crossover, mutation,
-// replacement and batch boundaries (ALGORITHM.md §7).
-#include "evolution/toy_problems.hpp"
-#include "operators.hpp"
+// replacement and batch boundaries (docs/algorithm.md §8.2-§8.5).
+#include "evolution/operators.hpp"
+#include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,9 +1,9 @@
 // The GA driver: determinism across thread counts, invalid children,
 // improvement on a toy problem, exact continuation from a saved state.
-#include "evolution/toy_problems.hpp"
-#include "ga_state_json.hpp"
-#include "population_stats.hpp"
-#include "steady_state.hpp"
+#include "evolution/ga_state_json.hpp"
+#include "evolution/population_stats.hpp"
+#include "evolution/steady_state.hpp"
+#include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Cheap problems for GA tests: no meshes involved.
-#include "problem.hpp"
+#include "evolution/problem.hpp"
 
 #include <cmath>
 #include <stdexcept>

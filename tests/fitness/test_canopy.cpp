@@ -1,9 +1,9 @@
-// Canopy (ALGORITHM.md §6): known answers, the exact-edge rule, and the
+// Canopy (docs/algorithm.md §10.1): known answers, the exact-edge rule, and the
 // z-buffer agreeing cell for cell with CGAL ray shooting.
-#include "canopy.hpp"
-#include "growth.hpp"
-#include "measures.hpp"
-#include "mesh_builders.hpp"
+#include "core/growth.hpp"
+#include "fitness/canopy.hpp"
+#include "fitness/measures.hpp"
+#include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>
 

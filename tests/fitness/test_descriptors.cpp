@@ -1,9 +1,9 @@
 // Descriptor measures on meshes with known answers, the canopy tops behind
 // crown_height, and the lookup by name.
-#include "canopy.hpp"
-#include "descriptors.hpp"
-#include "measures.hpp"
-#include "mesh_builders.hpp"
+#include "fitness/canopy.hpp"
+#include "fitness/descriptors.hpp"
+#include "fitness/measures.hpp"
+#include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>
 

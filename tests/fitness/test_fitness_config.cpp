@@ -1,7 +1,7 @@
 // Reading fitness configs: the registry, defaults in resolved(), and
 // ConfigIssues with their key paths.
-#include "fitness.hpp"
-#include "mesh_builders.hpp"
+#include "fitness/fitness.hpp"
+#include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,7 +1,7 @@
 // The Fitness wrapper: finite scores or a clear failure, counting, the
 // self-intersection rule and the guard for functions that are not thread-safe.
-#include "fitness.hpp"
-#include "mesh_builders.hpp"
+#include "fitness/fitness.hpp"
+#include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>
 

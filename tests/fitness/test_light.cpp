@@ -1,6 +1,6 @@
 // Light captured from parallel sun rays, with self-shading.
-#include "light.hpp"
-#include "mesh_builders.hpp"
+#include "fitness/light.hpp"
+#include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>
 

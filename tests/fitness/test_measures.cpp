@@ -1,8 +1,8 @@
 // Measures and metrics: volume, area, footprint, height, self-intersection.
-#include "cgal_geometry.hpp"
-#include "fitness.hpp"
-#include "measures.hpp"
-#include "mesh_builders.hpp"
+#include "fitness/cgal_geometry.hpp"
+#include "fitness/fitness.hpp"
+#include "fitness/measures.hpp"
+#include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,9 +1,9 @@
 // `morphogen score` end to end: runs the executable.
-#include "genome_io.hpp"
-#include "growth_params.hpp"
-#include "mesh_builders.hpp"
-#include "mesh_io.hpp"
-#include "support/temp_dir.hpp"
+#include "core/genome_io.hpp"
+#include "core/growth_params.hpp"
+#include "core/mesh_io.hpp"
+#include "tests/fitness/mesh_builders.hpp"
+#include "tests/support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>
 #include <nlohmann/json.hpp>

@@ -1,11 +1,11 @@
 #pragma once
-// A second, deliberately plain implementation of ALGORITHM.md §3-§4, written
+// A second, deliberately plain implementation of docs/algorithm.md §4-§5, written
 // straight from the text with different data structures (maps and sets, the
 // per-vertex pseudocode network). The growth tests check that the engine and
 // this agree to rounding error.
-#include "growth_params.hpp"
-#include "network.hpp"
-#include "seeds.hpp"
+#include "core/growth_params.hpp"
+#include "core/network.hpp"
+#include "core/seeds.hpp"
 
 #include <cmath>
 #include <map>

@@ -1,8 +1,8 @@
 #pragma once
 // Small meshes and helpers shared by the tests.
-#include "mesh.hpp"
-#include "network.hpp"
-#include "rng.hpp"
+#include "core/mesh.hpp"
+#include "core/network.hpp"
+#include "evolution/rng.hpp"
 
 #include <string>
 #include <utility>

@@ -1,0 +1,26 @@
+#pragma once
+// The mesh file formats, what a mesh file may hold and how it is written:
+// shared by the public reader/writer (mesh_io.hpp) and the per-format files
+// (mesh_io_detail.hpp).
+#include <cstddef>
+
+namespace morphogen {
+
+enum class MeshFormat { obj, ply, off, stl, glb };
+
+// What a mesh file may hold. The file size bounds the memory a read takes
+// (the file, plus at most the vertex and triangle arrays below); the
+// coordinate bound keeps areas, volumes and cross products of any two
+// coordinates finite and canopy cell indices exact.
+inline constexpr std::size_t kMaxMeshFileBytes = std::size_t{1} << 31;  // 2 GiB
+inline constexpr long long kMaxMeshVertices = 1LL << 26;                // 67,108,864
+inline constexpr long long kMaxMeshTriangles = 1LL << 27;               // 134,217,728 (after triangulation)
+inline constexpr double kMaxMeshCoordinate = 1e9;                       // |x|, |y|, |z|
+
+struct MeshWriteOptions {
+    // PLY only: 64-bit coordinates and normals (an exact record) instead of
+    // float32. three.js and other WebGL viewers cannot draw doubles.
+    bool ply_double = false;
+};
+
+}  // namespace morphogen

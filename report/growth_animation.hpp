@@ -1,0 +1,72 @@
+#pragma once
+// The growth of one genome as an animation (`morphogen grow --animate`,
+// `--frames-obj`, and the report's viewer). A growing mesh changes its vertex
+// count and flips change its triangles, so glTF morph targets cannot hold it:
+// each frame is a mesh and node of its own under one root node, and one
+// animation shows them in turn with STEP-interpolated scale keys, (1,1,1) for
+// the frame shown and (0,0,0) for the others (docs/file-formats.md).
+#include "core/growth.hpp"
+#include "core/mesh.hpp"
+#include "core/network.hpp"
+#include "core/seeds.hpp"
+#include "run/experiment_config.hpp"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace morphogen {
+
+// meshes[i] is the mesh after steps[i] growth steps: steps rise strictly from
+// 0 (the seed) to the steps growth did (the final mesh).
+struct GrowthFrames {
+    std::vector<MeshArrays> meshes;
+    std::vector<int> steps;
+};
+
+inline constexpr int kDefaultAnimationFrames = 50;
+inline constexpr int kMaxAnimationFrames = 1000;
+inline constexpr double kDefaultSecondsPerFrame = 0.1;  // 50 frames: 5 s
+// The final frame stays at least this long before a player loops.
+inline constexpr double kMinFinalFrameSeconds = 1.0;
+inline constexpr double kMinSecondsPerFrame = 0.001, kMaxSecondsPerFrame = 60.0;
+
+// min(kDefaultAnimationFrames, steps + 1): what --frames defaults to.
+int default_animation_frames(int steps);
+// Why `frames` frames cannot show `steps` steps, or "" when they can: the
+// seed and the final mesh are frames, and no step is shown twice, so frames
+// must lie in [2, steps + 1] (just 1 when steps is 0) and within
+// kMaxAnimationFrames.
+std::string animation_frames_problem(int frames, int steps);
+// The steps after which frames are taken: 0, evenly spaced steps (rounded),
+// `steps`. Requires animation_frames_problem(frames, steps) to be "".
+std::vector<int> animation_frame_steps(int steps, int frames);
+
+// Grows `seed` exactly as grower.grow(seed, workspace, times) does (the same
+// final state, returned) while copying into `frames` the meshes after
+// animation_frame_steps(steps, count) steps. `steps` must be the GrowthParams
+// steps the grower was made with. Throws ConfigError for a bad `count`.
+GrowthState grow_with_frames(const Grower& grower, const Seed& seed, int steps, int count,
+                             GrowthWorkspace& workspace, GrowthFrames& frames, PhaseTimes* times = nullptr);
+
+// Grows `genome` with config.network/config.growth and returns `frames` frames
+// (ConfigError when animation_frames_problem says no).
+GrowthFrames record_growth_frames(const ExperimentConfig& config, const Genome& genome, int frames);
+
+// The animated glTF: node 0 is the root ("growth"), node i + 1 shows frame i
+// (mesh i, named "step_<steps[i]>"); frame i is shown from i * seconds_per_frame
+// for seconds_per_frame, the last one for max(seconds_per_frame,
+// kMinFinalFrameSeconds), and it is the one visible at rest (no animation
+// playing). Throws ConfigError for no frames, mismatched steps/meshes or
+// seconds_per_frame outside [kMinSecondsPerFrame, kMaxSecondsPerFrame], and
+// IoError naming `source` if the file would pass kMaxMeshFileBytes.
+std::string encode_growth_animation_glb(const GrowthFrames& frames, double seconds_per_frame,
+                                        const std::string& source = "animation");
+// Writes those bytes atomically (core/atomic_file.hpp); IoError naming `out`.
+void write_growth_animation(const std::filesystem::path& out, const GrowthFrames& frames, double seconds_per_frame);
+
+// Writes frame i as dir/frame_NNNN.obj (4 digits, i from 0), creating `dir`;
+// IoError naming the directory or file that cannot be written.
+void write_growth_frames_obj(const std::filesystem::path& dir, const GrowthFrames& frames);
+
+}  // namespace morphogen

@@ -1,0 +1,18 @@
+#pragma once
+// The report's growth animation of a genome: the animated glTF of
+// growth_animation.hpp (one node per frame, STEP scale keys), as bytes.
+#include "core/network.hpp"
+#include "run/experiment_config.hpp"
+
+#include <optional>
+#include <string>
+
+namespace morphogen {
+
+// The GLB of `genome`'s growth in min(frames, growth.steps + 1) frames
+// (`frames` is set to the count used), or none with `why` set when no
+// animation can be made of it. Throws what growth and encoding throw.
+std::optional<std::string> report_animation_glb(const ExperimentConfig& config, const Genome& genome, int& frames,
+                                                std::string& why);
+
+}  // namespace morphogen

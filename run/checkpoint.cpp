@@ -1,0 +1,329 @@
+#include "run/checkpoint.hpp"
+
+#include "core/atomic_file.hpp"
+#include "core/errors.hpp"
+#include "core/json_text.hpp"
+#include "core/network.hpp"
+#include "evolution/ga_state_json.hpp"
+#include "evolution/genome_blob.hpp"
+#include "evolution/map_elites_state_json.hpp"
+#include "run/checkpoint_checks.hpp"
+#include "run/experiment_config.hpp"
+#include "run/fnv_hash.hpp"
+
+#include <stdexcept>
+#include <string_view>
+
+namespace morphogen {
+
+using nlohmann::json;
+
+namespace {
+constexpr const char* format_name = "morphogen-checkpoint";
+constexpr const char* genome_encoding = "f64le";
+
+json content_of(const RunState& s, GenomeBlobWriter* genomes) {
+    json history = json::array();
+    for (const HistoryRow& row : s.history) history.push_back(history_row_to_json(row));
+    json content{{"config", s.config},
+                 {"seed", s.seed},
+                 {"history", std::move(history)},
+                 {"lineage", {{"bytes", s.lineage_bytes}, {"hash", s.lineage_hash}}},
+                 {"elapsed_s", s.elapsed_s}};
+    if (s.elites)
+        content["map_elites"] = map_elites_state_to_json(*s.elites, genomes);
+    else
+        content["ga"] = ga_state_to_json(s.ga, genomes);
+    return content;
+}
+
+// The path of the first key in `stored` that `canonical` (the content written
+// again from what was read) does not have, at any depth; empty when none.
+// The hash guards against accidents only: a key added by hand with the hash
+// recomputed is caught here.
+std::string unknown_key(const json& stored, const json& canonical, const std::string& path) {
+    if (stored.is_object() && canonical.is_object()) {
+        for (const auto& [key, value] : stored.items()) {
+            const std::string here = path.empty() ? key : path + "." + key;
+            if (!canonical.contains(key)) return here;
+            if (std::string inner = unknown_key(value, canonical[key], here); !inner.empty()) return inner;
+        }
+    } else if (stored.is_array() && canonical.is_array()) {
+        for (std::size_t i = 0; i < stored.size() && i < canonical.size(); ++i)
+            if (std::string inner = unknown_key(stored[i], canonical[i], path + "[" + std::to_string(i) + "]");
+                !inner.empty())
+                return inner;
+    }
+    return {};
+}
+
+// FNV-1a 64 of the content's dump, continued over the binary part word by
+// word (Fnv1a64::update_words; its length is a multiple of 8).
+std::string content_hash(const std::string& dumped_content, std::string_view genomes) {
+    Fnv1a64 h;
+    h.update(dumped_content);
+    h.update_words(genomes);
+    return h.hex();
+}
+
+// The header line of format 2 without its "\n": the document's canonical dump
+// (keys sorted), built around the content's dump so it is dumped only once.
+std::string format2_header(const std::string& dumped_content, std::string_view genomes, std::uint64_t count,
+                           std::uint64_t dimension) {
+    return "{\"content\":" + dumped_content + ",\"format\":\"" + format_name + "\",\"genomes\":{\"count\":" +
+           std::to_string(count) + ",\"dimension\":" + std::to_string(dimension) + ",\"encoding\":\"" +
+           genome_encoding + "\"},\"hash\":\"" + content_hash(dumped_content, genomes) + "\",\"version\":2}";
+}
+
+std::string sealed_format2(const json& content, std::string_view genomes, std::uint64_t count,
+                           std::uint64_t dimension) {
+    std::string out = format2_header(content.dump(), genomes, count, dimension);
+    out.reserve(out.size() + 1 + genomes.size());
+    out += '\n';
+    out.append(genomes);
+    return out;
+}
+
+// Genomes a state holds (elites or population, and the best), for reserving.
+std::size_t genome_doubles(const RunState& s) {
+    if (s.elites) {
+        const auto& elites = s.elites->archive.elites();
+        const std::size_t D = s.elites->best ? s.elites->best->params.size() : 0;
+        return (elites.size() + 1) * D;
+    }
+    const std::size_t D = s.ga.best ? s.ga.best->params.size()
+                                    : (s.ga.population.empty() ? 0 : s.ga.population.front().params.size());
+    return (s.ga.population.size() + 1) * D;
+}
+
+// A verified envelope: the content as stored and, in format 2, the binary part
+// (a view into the checked text).
+struct Envelope {
+    int version = 0;
+    json content;
+    std::string_view genomes;
+    std::uint64_t count = 0;
+    std::uint64_t dimension = 0;
+};
+
+Envelope open_envelope(const std::string& text, const std::string& source) {
+    auto refuse = [&](const std::string& why) -> CheckpointError {
+        return CheckpointError("checkpoint " + source + " refused: " + why);
+    };
+    if (text.empty()) throw refuse("the file is empty");
+    // The header never holds a raw newline (dump() escapes it in strings).
+    const std::size_t newline = text.find('\n');
+    const std::string_view header = std::string_view(text).substr(0, newline);
+    json document;
+    try {
+        document = read_json_object(header);
+    } catch (const JsonTextError& e) {
+        throw refuse(std::string("invalid JSON (truncated, corrupt or hostile) at ") + e.what());
+    }
+    if (!document.is_object() || !document.contains("format") || document["format"] != format_name)
+        throw refuse("not a morphogen checkpoint (\"format\" is not \"" + std::string(format_name) + "\")");
+    if (!document.contains("version") || !document["version"].is_number_integer())
+        throw refuse("it has no version number");
+    if (document["version"] != 1 && document["version"] != 2)
+        throw refuse("version " + document["version"].dump() +
+                     " is not supported (this build reads versions 1 and 2)");
+    Envelope envelope;
+    envelope.version = document["version"].get<int>();
+    if (!document.contains("content") || !document.contains("hash") || !document["hash"].is_string())
+        throw refuse("\"content\" or \"hash\" is missing");
+    if (envelope.version == 1) {
+        if (document.size() != 4) throw refuse("unexpected keys besides format, version, hash, content");
+        const std::string expected = fnv1a64_hex(document["content"].dump());
+        if (document["hash"] != expected)
+            throw refuse("content hash mismatch (corrupt): stored " + document["hash"].get<std::string>() +
+                         ", computed " + expected);
+        if (checkpoint_text(document["content"]) != text)
+            throw refuse("the file is not in the form morphogen writes (edited or corrupt)");
+        envelope.content = std::move(document["content"]);
+        return envelope;
+    }
+    if (document.size() != 5) throw refuse("unexpected keys besides format, version, genomes, hash, content");
+    const json& genomes = document.contains("genomes") ? document["genomes"] : json();
+    if (!genomes.is_object() || genomes.size() != 3 || !genomes.contains("count") ||
+        !genomes["count"].is_number_unsigned() || !genomes.contains("dimension") ||
+        !genomes["dimension"].is_number_unsigned() || !genomes.contains("encoding") ||
+        genomes["encoding"] != genome_encoding)
+        throw refuse("\"genomes\" is not {\"count\": N, \"dimension\": D, \"encoding\": \"" +
+                     std::string(genome_encoding) + "\"}");
+    envelope.count = genomes["count"].get<std::uint64_t>();
+    envelope.dimension = genomes["dimension"].get<std::uint64_t>();
+    if (newline == std::string::npos) throw refuse("truncated: the header line has no end");
+    envelope.genomes = std::string_view(text).substr(newline + 1);
+    // count x dimension x 8 bytes, compared without overflow; dimension is 0
+    // exactly when there are no genomes (so no byte of the header is free).
+    const std::uint64_t size = envelope.genomes.size();
+    const bool sized = envelope.dimension == 0
+                           ? size == 0 && envelope.count == 0
+                           : envelope.count > 0 && size % (8 * envelope.dimension) == 0 &&
+                                 size / (8 * envelope.dimension) == envelope.count &&
+                                 envelope.dimension < (std::uint64_t{1} << 56);
+    if (!sized)
+        throw refuse("its binary part holds " + std::to_string(size) + " bytes, the header announces " +
+                     std::to_string(envelope.count) + " genomes x " + std::to_string(envelope.dimension) +
+                     " doubles (truncated or corrupt)");
+    const std::string expected = content_hash(document["content"].dump(), envelope.genomes);
+    if (document["hash"] != expected)
+        throw refuse("content hash mismatch (corrupt): stored " + document["hash"].get<std::string>() +
+                     ", computed " + expected);
+    if (document.dump() != header) throw refuse("the file is not in the form morphogen writes (edited or corrupt)");
+    envelope.content = std::move(document["content"]);
+    return envelope;
+}
+
+// Replaces the "genome": k of an individual object by its "params" array.
+void inline_genome(json& individual, GenomeBlobReader& genomes, const std::string& path) {
+    if (!individual.is_object() || !individual.contains("genome")) return;
+    const json& index = individual["genome"];
+    if (!index.is_number_unsigned()) throw std::invalid_argument(path + ".genome: expected a non-negative integer");
+    individual["params"] = genomes.take(index.get<std::uint64_t>(), path + ".genome");
+    individual.erase("genome");
+}
+
+void inline_genomes(json& content, GenomeBlobReader& genomes) {
+    auto each = [&](json& parent, const char* key, const std::string& path) {
+        if (!parent.is_object() || !parent.contains(key) || !parent[key].is_array()) return;
+        json& list = parent[key];
+        for (std::size_t i = 0; i < list.size(); ++i) inline_genome(list[i], genomes, path + "[" + std::to_string(i) + "]");
+    };
+    if (content.contains("ga") && content["ga"].is_object()) {
+        json& ga = content["ga"];
+        each(ga, "population", "ga.population");
+        if (ga.contains("best")) inline_genome(ga["best"], genomes, "ga.best");
+    }
+    if (content.contains("map_elites") && content["map_elites"].is_object()) {
+        json& me = content["map_elites"];
+        if (me.contains("archive")) each(me["archive"], "elites", "map_elites.archive.elites");
+        if (me.contains("best")) inline_genome(me["best"], genomes, "map_elites.best");
+    }
+    genomes.check_all_taken("the checkpoint");
+}
+}  // namespace
+
+std::string checkpoint_text(const json& content) {
+    const json document{{"format", format_name},
+                        {"version", 1},
+                        {"hash", fnv1a64_hex(content.dump())},
+                        {"content", content}};
+    return document.dump() + "\n";
+}
+
+json checkpoint_content(const std::string& text, const std::string& source) {
+    Envelope envelope = open_envelope(text, source);
+    if (envelope.version == 2) {
+        try {
+            GenomeBlobReader genomes(envelope.genomes, envelope.count, envelope.dimension);
+            inline_genomes(envelope.content, genomes);
+        } catch (const std::invalid_argument& e) {
+            throw CheckpointError("checkpoint " + source + " refused: its genomes do not fit: " + e.what());
+        }
+    }
+    return std::move(envelope.content);
+}
+
+CheckpointParts checkpoint_parts(const std::string& bytes, const std::string& source) {
+    Envelope envelope = open_envelope(bytes, source);
+    if (envelope.version != 2) throw CheckpointError("checkpoint " + source + " is not in format 2");
+    return {std::move(envelope.content), std::string(envelope.genomes), envelope.count, envelope.dimension};
+}
+
+std::string checkpoint_bytes(const CheckpointParts& parts) {
+    return sealed_format2(parts.content, parts.genomes, parts.count, parts.dimension);
+}
+
+std::string checkpoint_bytes(const RunState& state) {
+    GenomeBlobWriter genomes;
+    genomes.reserve(genome_doubles(state));
+    const json content = content_of(state, &genomes);
+    return sealed_format2(content, genomes.bytes(), genomes.count(), genomes.dimension());
+}
+
+void save_checkpoint(const std::filesystem::path& path, const RunState& state) {
+    // The header and the genomes written as two parts: the genomes are never copied.
+    GenomeBlobWriter genomes;
+    genomes.reserve(genome_doubles(state));
+    const json content = content_of(state, &genomes);
+    const std::string header = format2_header(content.dump(), genomes.bytes(), genomes.count(), genomes.dimension()) + "\n";
+    const std::string_view parts[] = {header, genomes.bytes()};
+    write_file_atomically(path, parts);
+}
+
+RunState load_checkpoint(const std::filesystem::path& path) {
+    std::string text;
+    try {
+        text = read_file_bytes(path);
+    } catch (const IoError& e) {
+        throw CheckpointError("checkpoint " + path.string() + " cannot be read: " + e.what());
+    }
+    const Envelope envelope = open_envelope(text, path.string());
+    const json& content = envelope.content;
+    auto refuse = [&](const std::string& why) -> CheckpointError {
+        return CheckpointError("checkpoint " + path.string() + " refused: " + why);
+    };
+    RunState state;
+    try {
+        state.config = content.at("config");
+        state.seed = content.at("seed").get<std::uint64_t>();
+        ExperimentConfig config;
+        try {
+            config = read_experiment_config(state.config, "checkpoint config");
+        } catch (const ConfigError& e) {
+            throw refuse(std::string("its config is not valid: ") + e.what());
+        }
+        if (config.resolved != state.config) throw refuse("its config is not a resolved config");
+        if (config.run.seed != state.seed) throw refuse("its seed differs from its config's run.seed");
+        const std::size_t dimension = parameter_count(config.network.layers());
+        const auto P = static_cast<std::uint64_t>(config.evolution.population);
+        if (content.size() != 6) throw refuse("unexpected keys in its content");
+        // Format 2: the genomes come from the binary part, never through JSON numbers.
+        std::optional<GenomeBlobReader> blob;
+        if (envelope.version == 2) {
+            if (envelope.count > 0 && envelope.dimension != dimension)
+                throw refuse("its genomes have " + std::to_string(envelope.dimension) + " parameters, its network " +
+                             std::to_string(dimension));
+            blob.emplace(envelope.genomes, envelope.count, envelope.dimension);
+        }
+        GenomeBlobReader* genomes = blob ? &*blob : nullptr;
+        if (config.algorithm == Algorithm::map_elites) {
+            if (!content.contains("map_elites")) throw refuse("its config is a map_elites run but it holds no map_elites state");
+            state.elites = map_elites_state_from_json(content.at("map_elites"), config.qd.archive, config.qd.descriptors,
+                                                      config.qd.cells(), P, dimension, genomes);
+        } else {
+            state.ga = ga_state_from_json(content.at("ga"), config.evolution, dimension, genomes);
+        }
+        for (const json& row : content.at("history")) state.history.push_back(history_row_from_json(row));
+        if (state.history.size() != state.births() / P)
+            throw refuse(std::to_string(state.history.size()) + " history rows for " +
+                         std::to_string(state.births()) + " births");
+        for (const HistoryRow& row : state.history)
+            if (row.qd != (config.algorithm == Algorithm::map_elites))
+                throw refuse("its history rows do not fit its algorithm");
+        for (std::size_t g = 0; g < state.history.size(); ++g)
+            if (state.history[g].generation != g) throw refuse("history rows out of order");
+        state.lineage_bytes = content.at("lineage").at("bytes").get<std::uint64_t>();
+        state.lineage_hash = content.at("lineage").at("hash").get<std::string>();
+        state.elapsed_s = content.at("elapsed_s").get<double>();
+        {
+            GenomeBlobWriter rewritten;
+            const json canonical = content_of(state, envelope.version == 2 ? &rewritten : nullptr);
+            if (const std::string key = unknown_key(content, canonical, ""); !key.empty())
+                throw refuse("unknown key " + key + " in its content");
+        }
+        try {
+            check_checkpoint_content(state, config);
+        } catch (const std::invalid_argument& e) {
+            throw refuse(std::string("it contradicts itself: ") + e.what());
+        }
+    } catch (const CheckpointError&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw refuse(std::string("its content does not fit: ") + e.what());
+    }
+    return state;
+}
+
+}  // namespace morphogen

@@ -1,0 +1,181 @@
+#include "run/evolution_run.hpp"
+
+#include "core/atomic_file.hpp"
+#include "core/errors.hpp"
+#include "run/exit_codes.hpp"
+#include "run/growth_problem.hpp"
+#include "run/progress.hpp"
+#include "run/search_drivers.hpp"
+#include "run/stop_signals.hpp"
+#include "run/worker_threads.hpp"
+
+#include <spdlog/sinks/basic_file_sink.h>
+#include <spdlog/sinks/stdout_color_sinks.h>
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+
+namespace morphogen {
+
+namespace {
+RemoteEvaluatorFactory g_remote_factory;
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+}  // namespace
+
+RunLoggers make_run_loggers(const RunPaths& paths) {
+    auto console = std::make_shared<spdlog::sinks::stderr_color_sink_mt>();
+    std::shared_ptr<spdlog::sinks::basic_file_sink_mt> file;
+    try {
+        file = std::make_shared<spdlog::sinks::basic_file_sink_mt>(paths.log.string(), /*truncate=*/false);
+    } catch (const spdlog::spdlog_ex& e) {
+        throw IoError(paths.log.string() + ": cannot open the log (" + e.what() + ")");
+    }
+    RunLoggers loggers;
+    loggers.failure = std::make_shared<std::string>();
+    loggers.both = std::make_shared<spdlog::logger>("morphogen", spdlog::sinks_init_list{console, file});
+    loggers.file_only = std::make_shared<spdlog::logger>("morphogen", file);
+    for (auto* logger : {&loggers.both, &loggers.file_only}) {
+        (*logger)->set_pattern("[%Y-%m-%d %H:%M:%S.%e] [%l] %v");
+        (*logger)->flush_on(spdlog::level::info);
+        // Only log.txt's failures stop a run: a closed stderr is no reason to.
+        (*logger)->set_error_handler(
+            [failure = loggers.failure, name = paths.log.string()](const std::string& message) {
+                if (failure->empty() && message.find(name) != std::string::npos) *failure = message;
+            });
+    }
+    console->set_pattern("%v");
+    return loggers;
+}
+
+void set_remote_evaluator_factory(RemoteEvaluatorFactory factory) { g_remote_factory = std::move(factory); }
+
+namespace {
+template <class Driver>
+int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
+    const ExperimentConfig& config = s.config;
+    const auto P = static_cast<std::uint64_t>(config.evolution.population);
+    const std::uint64_t target_births = (config.run.generations + 1) * P;
+    // No more threads than one step has births to score.
+    const int threads = std::min(resolve_threads(config.run.threads), config.evolution.batch);
+    auto& log = s.log.both;
+    if (config.run.threads > threads)
+        log->warn("run.threads {} is more than can run at once here ({} cores, batch {}): using {} threads",
+                  config.run.threads, omp_get_num_procs(), config.evolution.batch, threads);
+    start_worker_threads(threads);
+    const std::unique_ptr<BatchEvaluator> remote = g_remote_factory ? g_remote_factory(config, s.paths.dir) : nullptr;
+
+    Progress progress(s.log.both, s.log.file_only, target_births, config.run.generations);
+    log->info("run directory {}: population {}, generation {}/{} ({} births done), {} threads, seed {}",
+              s.paths.dir.string(), P, ga.completed_generations(), config.run.generations, ga.births(),
+              threads, config.run.seed);
+    if (remote) log->info("genomes are grown and scored by {}", remote->description());
+
+    const auto session_start = Clock::now();
+    const double elapsed_before = s.state.elapsed_s;
+    auto generation_start = session_start;
+    std::uint64_t generation_first_birth = ga.births();
+
+    // spdlog reports a failed log write to the handler, not to us: check it.
+    auto check_log = [&] {
+        if (!s.log.failure->empty()) throw IoError(*s.log.failure);
+    };
+    auto checkpoint = [&] {
+        check_log();
+        s.history.sync();
+        s.lineage.sync();
+        s.state.config = config.resolved;
+        s.state.seed = config.run.seed;
+        ga.save(s.state);
+        s.state.lineage_bytes = s.lineage.size();
+        s.state.lineage_hash = s.lineage.hash_hex();
+        s.state.elapsed_s = elapsed_before + seconds_since(session_start);
+        // archive.csv first: a checkpoint never refers to an older archive.csv.
+        if (config.algorithm == Algorithm::map_elites) write_file_atomically(s.paths.archive, ga.archive_text());
+        save_checkpoint(s.paths.checkpoint, s.state);
+    };
+
+    progress.batch(ga.births(), ga.completed_generations(),
+                   ga.best() ? std::optional<double>(ga.best()->fitness) : std::nullopt);
+    while (ga.births() < target_births) {
+        if (StopSignals::requested()) {
+            checkpoint();
+            progress.clear();
+            log->warn("stopped by signal {} after {} births; checkpoint saved. Continue with: morphogen resume {}",
+                      StopSignals::signal_number(), ga.births(), s.paths.dir.string());
+            return exit_code::interrupted;
+        }
+        const StepResult out = ga.step(threads, remote.get());
+        std::string rows;
+        for (std::size_t i = 0; i < out.children.size(); ++i) {
+            rows += format_lineage_row(out.children[i], s.lineage_descriptor_columns.value_or(config.qd.descriptors.size()));
+            if (!out.errors[i].empty()) {
+                progress.clear();
+                log->warn("birth {} is invalid: {}", out.children[i].id, out.errors[i]);
+            }
+        }
+        s.lineage.write(rows);
+        check_log();
+        const std::uint64_t births = ga.births();
+        progress.batch(births, births / P, ga.best() ? std::optional<double>(ga.best()->fitness) : std::nullopt);
+        if (!out.ends_generation) continue;
+
+        const std::uint64_t generation = births / P - 1;
+        HistoryRow row;
+        row.generation = generation;
+        row.births = births;
+        ga.fill(row, out);
+        row.invalid = out.generation_invalid;
+        const double generation_seconds = seconds_since(generation_start);
+        row.births_per_s =
+            generation_seconds > 0 ? static_cast<double>(births - generation_first_birth) / generation_seconds : 0.0;
+        row.elapsed_s = elapsed_before + seconds_since(session_start);
+        s.history.write(format_history_row(row));
+        s.state.history.push_back(row);
+        progress.clear();
+        progress.generation(row);
+
+        const bool last = births == target_births;
+        const auto every = [&](std::uint64_t n) { return n > 0 && (generation % n == 0 || last); };
+        if (config.run.export_every > 0 && every(config.run.export_every)) {
+            if (const Individual* best = ga.exported())
+                problem.export_genome(best->params, s.paths.best_stem(generation));
+        }
+        if (last || every(config.run.checkpoint_every)) checkpoint();
+        generation_start = Clock::now();
+        generation_first_birth = births;
+    }
+    progress.clear();
+    if (remote && !remote->summary().empty()) s.log.file_only->info("{}", remote->summary());
+    if (ga.best())
+        log->info("done: generation {} reached; best fitness {} (individual {})", config.run.generations,
+                  format_number(ga.best()->fitness), ga.best()->id);
+    else
+        log->info("done: generation {} reached; no valid individual", config.run.generations);
+    return exit_code::ok;
+}
+
+}  // namespace
+
+int run_session(RunSession& s, GrowthProblem& problem) {
+    try {
+        if (s.config.algorithm == Algorithm::map_elites) {
+            EliteDriver driver(s.config, problem, s.state, resolve_threads(s.config.run.threads));
+            return run_loop(s, problem, driver);
+        }
+        GaDriver driver(s.config, problem, s.state);
+        return run_loop(s, problem, driver);
+    } catch (const IoError& e) {
+        throw IoError(std::string(e.what()) + " (the last checkpoint is intact: free space or fix the file, then " +
+                      "continue with morphogen resume " + s.paths.dir.string() + ")");
+    }
+}
+
+}  // namespace morphogen

@@ -1,0 +1,68 @@
+#pragma once
+// The whole experiment config: sections `network`, `growth`, `fitness`,
+// `evolution`, `run`. Every key has a default, so `{}` is valid. Reading
+// collects every problem (unknown keys with a suggestion, wrong types, out of
+// range) and throws one ConfigError listing them all with their key paths.
+// configs/schema.json documents the same keys, ranges and defaults (a test
+// keeps the two in step).
+#include "core/growth_params.hpp"
+#include "evolution/ga_params.hpp"
+#include "fitness/fitness.hpp"
+#include "run/map_elites_config.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <string>
+
+namespace morphogen {
+
+// The `run` section: how an `evolve` run is driven (not what it computes,
+// except `seed`).
+struct RunParams {
+    std::uint64_t seed = 1;          // run.seed, [0, 2^53-1] so any JSON tool keeps it exact
+    std::uint64_t generations = 100; // GA generations after the initial population (generation 0)
+    std::uint64_t checkpoint_every = 1;  // generations between checkpoints; 0 = only at the end / on stop
+    std::uint64_t export_every = 1;      // generations between best-mesh exports; 0 = never
+    int threads = 0;                 // worker threads; 0 = all cores
+    std::string name;                // run name; "" = the config file's stem
+};
+
+struct ExperimentConfig {
+    NetworkParams network;
+    GrowthParams growth;
+    std::shared_ptr<const Fitness> fitness;
+    GaParams evolution;
+    Algorithm algorithm = Algorithm::steady_state;  // evolution.algorithm
+    QdParams qd;  // descriptors and archive (map_elites only; empty otherwise)
+    RunParams run;
+    nlohmann::json resolved;  // the config with every default filled in
+};
+
+// Values from the command line that replace the document's, before checking
+// (so they are range-checked like any key and recorded in `resolved`).
+struct ConfigOverrides {
+    std::optional<std::uint64_t> seed, generations;
+    std::optional<int> threads;
+};
+
+// `source` names the document in messages (usually the file path).
+ExperimentConfig read_experiment_config(const nlohmann::json& document, const std::string& source,
+                                        const ConfigOverrides& overrides = {});
+// An empty path means the default config `{}`. An empty run.name becomes the
+// file's stem (characters outside [A-Za-z0-9._-] replaced by '_').
+ExperimentConfig load_experiment_config(const std::string& path, const ConfigOverrides& overrides = {});
+
+// The `evolution` and `run` sections on their own (each calls reader.finish()).
+// `algorithm` (if not null) receives evolution.algorithm; the key is recorded
+// in the reader's resolved section either way (read_experiment_config drops
+// it again for steady_state, so GA configs resolve as before it existed).
+GaParams read_evolution_params(ObjectReader& reader, Algorithm* algorithm = nullptr);
+RunParams read_run_params(ObjectReader& reader);
+
+// A run name derived from a config path: its stem, sanitised.
+std::string run_name_from_path(const std::string& path);
+
+}  // namespace morphogen

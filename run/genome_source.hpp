@@ -1,0 +1,19 @@
+#pragma once
+// Where a command's genome comes from: `--random SEED` or `--genome FILE`.
+#include "core/network.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace morphogen {
+
+// Every parameter uniform in [-init_range, init_range), drawn from
+// RandomStream(seed, 0): `grow --random S` and gallery entry with seed S agree.
+Genome random_genome(const std::vector<int>& layers, double init_range, std::uint64_t seed);
+
+// Loads a genome file and checks its layers match the config's (ConfigError
+// naming both if not).
+Genome load_genome_for(const std::vector<int>& layers, const std::string& path);
+
+}  // namespace morphogen

@@ -1,0 +1,52 @@
+#pragma once
+// The experiment as a GA Problem: a genome (parameter vector) becomes a
+// Network, grows the config's seed mesh with core's Grower, and is scored by
+// the config's Fitness. This is the one place where evolution meets meshes.
+#include "core/growth.hpp"
+#include "core/seeds.hpp"
+#include "evolution/problem.hpp"
+#include "fitness/descriptors.hpp"
+#include "run/experiment_config.hpp"
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace morphogen {
+
+class GrowthProblem final : public Problem {
+public:
+    // Builds the seed mesh once (MeshError/IoError if a seed file is bad).
+    explicit GrowthProblem(const ExperimentConfig& config);
+
+    std::size_t dimension() const override { return dimension_; }
+    // One block per neuron (weights and threshold), as crossover exchanges them.
+    std::vector<Block> blocks() const override;
+    void prepare(int workers) override;
+    // Score = fitness of the grown mesh; size = its vertex count; when the
+    // config has descriptors, descriptors = its measures of that same mesh.
+    // In a MAP-Elites run a valid score with a measure that throws is
+    // invalid, with the reason; a GA run only records the measures, so there
+    // a measure that throws or is non-finite leaves descriptors empty.
+    Evaluation evaluate(std::span<const double> params, int worker) const override;
+
+    // Grows one genome (single-threaded use, e.g. exporting the best).
+    GrowthState grow(std::span<const double> params) const;
+    // Writes <stem>.glb, <stem>.obj and <stem>.genome.json for a genome, each
+    // atomically (atomic_file.hpp). Throws IoError naming the file and the reason.
+    void export_genome(std::span<const double> params, const std::filesystem::path& stem) const;
+
+private:
+    std::vector<int> layers_;
+    std::size_t dimension_;
+    GrowthParams growth_;
+    Seed seed_;
+    std::shared_ptr<const Fitness> fitness_;
+    std::optional<DescriptorSet> descriptors_;  // when the config has descriptors
+    bool descriptors_decide_validity_;          // MAP-Elites: a failed measure makes the birth invalid
+    // One per worker; evaluate() with worker w touches only workspaces_[w].
+    mutable std::vector<GrowthWorkspace> workspaces_;
+};
+
+}  // namespace morphogen

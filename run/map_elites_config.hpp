@@ -1,0 +1,46 @@
+#pragma once
+// The config keys of MAP-Elites runs (docs/algorithm.md §9, docs/map-elites.md):
+// `evolution.algorithm`, the top-level `descriptors` list and `archive`
+// section. They appear in the resolved config only when the algorithm is
+// "map_elites" (and `descriptors` when a steady-state config gives it), so a
+// steady-state config without them resolves to the same bytes as before they
+// existed (its config.json and checkpoints are unchanged).
+#include "core/config_reader.hpp"
+#include "evolution/archive.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace morphogen {
+
+enum class Algorithm { steady_state, map_elites };
+
+struct QdParams {
+    std::vector<DescriptorRange> descriptors;  // name = the measure (fitness/descriptors.hpp)
+    ArchiveKind archive = ArchiveKind::grid;
+    std::uint64_t cvt_cells = 1000;            // archive.cells, CVT only
+    double qd_offset = 0.0;                    // archive.qd_offset: QD-score sums fitness - offset
+
+    std::vector<std::string> measure_names() const;
+    // Cells of the archive: the product of the bins (grid) or cvt_cells.
+    std::uint64_t cells() const;
+};
+
+// Reads `descriptors` and `archive` from the top-level reader for a run with
+// `algorithm`, adding every problem to the reader's issues with its key path:
+// an unknown measure (with the nearest name), min >= max, bins < 1, a grid
+// with no or more than 3 descriptors or more than kMaxGridCells cells, a CVT
+// with more than kMaxCvtCells cells, and `archive` given for a steady-state
+// run (it would be ignored). A steady-state run may give `descriptors` (any
+// number, no archive limits): its births' measures are then recorded in
+// lineage.csv, so it can be binned like a MAP-Elites run. Records
+// `descriptors` in the resolved config when it is given or the run is
+// map_elites, `archive` only for map_elites. Whether a full archive fits in memory is resource_estimate's
+// part (search_genomes counts its cells), with the other limits.
+QdParams read_qd_params(ObjectReader& top, Algorithm algorithm);
+
+// "steady_state" | "map_elites".
+const char* algorithm_name(Algorithm algorithm);
+
+}  // namespace morphogen
