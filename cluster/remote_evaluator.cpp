@@ -1,7 +1,6 @@
 #include "cluster/remote_evaluator.hpp"
 
 #include "cluster/protocol.hpp"
-#include "run/stop_signals.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -22,7 +21,10 @@ double cpu_s() { return clock_s(CLOCK_PROCESS_CPUTIME_ID); }  // all of rank 0's
 }  // namespace
 
 RemoteEvaluator::RemoteEvaluator(World& world, const ExperimentConfig& config, std::filesystem::path run_dir)
-    : world_(world), run_dir_(std::move(run_dir)), threads_(static_cast<std::size_t>(world.size()), 0) {
+    : world_(world),
+      run_dir_(std::move(run_dir)),
+      threads_(static_cast<std::size_t>(world.size()), 0),
+      outstanding_(static_cast<std::size_t>(world.size()), 0) {
     const std::string text = config.resolved.dump();
     for (int w = 1; w < world_.size(); ++w) world_.send(w, tag_config, text);
     std::string failures;
@@ -51,16 +53,26 @@ RemoteEvaluator::RemoteEvaluator(World& world, const ExperimentConfig& config, s
 }
 
 RemoteEvaluator::~RemoteEvaluator() {
-    if (!in_flight_) return;
-    std::cerr << "morphogen: rank 0 failed during a batch; ending every process (the run can be resumed from its "
-                 "last checkpoint: morphogen resume "
+    try {
+        cancel();
+        return;
+    } catch (const std::exception& e) {
+        std::cerr << "morphogen: " << e.what() << '\n';
+    }
+    std::cerr << "morphogen: rank 0 failed with genomes on the workers; ending every process (the run can be "
+                 "resumed from its last checkpoint: morphogen resume "
               << run_dir_.string() << ")\n";
     world_.abort(1);
 }
 
-std::string RemoteEvaluator::description() const {
+int RemoteEvaluator::capacity() const {
     int total = 0;
     for (std::size_t w = 1; w < threads_.size(); ++w) total += threads_[w];
+    return total;
+}
+
+std::string RemoteEvaluator::description() const {
+    const int total = capacity();
     const std::size_t workers = threads_.size() - 1;
     return std::to_string(workers) + (workers == 1 ? " worker process (" : " worker processes (") +
            std::to_string(total) + (total == 1 ? " thread" : " threads") +
@@ -80,54 +92,81 @@ std::string RemoteEvaluator::summary() const {
     return text;
 }
 
-std::vector<Evaluation> RemoteEvaluator::evaluate(const std::vector<std::vector<double>>& genomes) {
-    const std::size_t n = genomes.size();
-    const auto workers = static_cast<std::size_t>(world_.size() - 1);
-    std::vector<Evaluation> out(n);
-    std::vector<bool> done(n, false);
-    const double wall0 = wall_s(), cpu0 = cpu_s();
-    std::size_t next = 0, received = 0;
-    in_flight_ = true;
+void RemoteEvaluator::submit(std::uint64_t birth, std::span<const double> params) {
+    queued_.push_back(Queued{birth, std::vector<double>(params.begin(), params.end())});
+    dispatch();
+}
 
-    // A stop signal waits for the batch; if it came because a process died
-    // (mpirun then signals everyone), this is the last word from rank 0.
-    auto note_stop = [&] {
-        if (stop_noted_ || !StopSignals::requested()) return;
-        stop_noted_ = true;
-        std::cerr << "morphogen: signal " << StopSignals::signal_number()
-                  << ": finishing the current batch on the workers, then checkpointing; if a process died, the job "
-                     "ends now and the run can be resumed from its last checkpoint: morphogen resume "
-                  << run_dir_.string() << "\n";
-    };
-    // A chunk is the worker's thread count, but no more than an even share of
-    // the batch, so small batches still reach every worker.
-    const std::size_t share = std::max<std::size_t>(1, n / workers);
-    auto hand_out = [&](int w) {
-        const std::size_t k = std::min({static_cast<std::size_t>(std::max(1, threads_[static_cast<std::size_t>(w)])),
-                                        share, n - next});
-        std::vector<WorkItem> items(k);
-        for (std::size_t j = 0; j < k; ++j) items[j] = WorkItem{next + j, genomes[next + j]};
-        next += k;
-        world_.send(w, tag_work, encode_work(items), note_stop);
-    };
-    for (int w = 1; w < world_.size() && next < n; ++w) hand_out(w);
-
-    while (received < n) {
-        const Message m = world_.receive(World::any_source, tag_result, note_stop);
-        for (ResultItem& item : decode_results(m.bytes)) {
-            if (item.index >= n || done[item.index])
-                throw std::runtime_error("worker rank " + std::to_string(m.source) + " returned an unknown genome");
-            done[item.index] = true;
-            out[item.index] = std::move(item.evaluation);
-            ++received;
+void RemoteEvaluator::dispatch() {
+    for (int w = 1; w < world_.size() && !queued_.empty(); ++w) {
+        const auto r = static_cast<std::size_t>(w);
+        const int room = 2 * std::max(1, threads_[r]) - outstanding_[r];
+        if (room <= 0) continue;
+        std::vector<WorkItem> items;
+        for (int k = 0; k < room && !queued_.empty(); ++k) {
+            items.push_back(WorkItem{queued_.front().birth, std::move(queued_.front().params)});
+            queued_.pop_front();
         }
-        if (next < n) hand_out(m.source);
+        outstanding_[r] += static_cast<int>(items.size());
+        world_.post(w, tag_work, encode_work(items));
     }
-    in_flight_ = false;
+    world_.progress();
+}
+
+bool RemoteEvaluator::receive_results() {
+    world_.progress();
+    std::optional<Message> m = world_.try_receive(World::any_source, tag_result);
+    if (!m) return false;
+    const auto r = static_cast<std::size_t>(m->source);
+    for (ResultItem& item : decode_results(m->bytes)) {
+        if (outstanding_[r] <= 0)
+            throw std::runtime_error("worker rank " + std::to_string(m->source) + " returned a genome it was not sent");
+        --outstanding_[r];
+        if (dropped_ > 0) {
+            --dropped_;
+            continue;
+        }
+        ready_.push_back(ScoredBirth{item.index, std::move(item.evaluation)});
+        ++genomes_;
+    }
+    dispatch();
+    return true;
+}
+
+std::optional<ScoredBirth> RemoteEvaluator::next(std::chrono::milliseconds timeout) {
+    const double wall0 = wall_s(), cpu0 = cpu_s();
+    const double deadline = wall0 + 1e-3 * static_cast<double>(timeout.count());
+    World::Backoff backoff;
+    while (ready_.empty()) {
+        if (receive_results()) {
+            backoff.reset();
+            continue;
+        }
+        if (wall_s() >= deadline) break;
+        backoff.pause();
+    }
     wait_wall_ += wall_s() - wall0;
     wait_cpu_ += cpu_s() - cpu0;
-    genomes_ += n;
+    if (ready_.empty()) return std::nullopt;
+    ScoredBirth out = std::move(ready_.front());
+    ready_.pop_front();
     return out;
+}
+
+void RemoteEvaluator::cancel() {
+    queued_.clear();
+    ready_.clear();
+    std::size_t due = 0;
+    for (std::size_t r = 1; r < outstanding_.size(); ++r) due += static_cast<std::size_t>(outstanding_[r]);
+    dropped_ = due;
+    World::Backoff backoff;
+    while (dropped_ > 0) {
+        if (receive_results())
+            backoff.reset();
+        else
+            backoff.pause();
+    }
+    world_.flush();
 }
 
 }  // namespace morphogen::cluster

@@ -1,14 +1,14 @@
 #include "cluster/worker.hpp"
 
 #include "cluster/protocol.hpp"
-#include "evolution/batch.hpp"
+#include "evolution/thread_evaluator.hpp"
 #include "run/experiment_config.hpp"
 #include "run/growth_problem.hpp"
 #include "run/worker_threads.hpp"
 
 #include <nlohmann/json.hpp>
-#include <omp.h>
 
+#include <chrono>
 #include <csignal>
 #include <exception>
 #include <memory>
@@ -18,32 +18,38 @@ namespace morphogen::cluster {
 namespace {
 struct Serving {
     std::unique_ptr<GrowthProblem> problem;
+    std::unique_ptr<ThreadEvaluator> evaluator;
     int threads = 1;
 };
 
 // The problem of a new session, or the reason it cannot be built.
 std::string start_session(Serving& serving, const std::string& config_text) {
     try {
+        serving.evaluator.reset();
         const ExperimentConfig config =
             read_experiment_config(nlohmann::json::parse(config_text), "config from rank 0");
         serving.problem = std::make_unique<GrowthProblem>(config);
         serving.threads = resolve_threads(config.run.threads);
-        start_worker_threads(serving.threads);
-        serving.problem->prepare(serving.threads);
+        serving.evaluator = std::make_unique<ThreadEvaluator>(*serving.problem, serving.threads);
         return {};
     } catch (const std::exception& e) {
+        serving.evaluator.reset();
         serving.problem.reset();
         return e.what();
     }
 }
 
-std::vector<ResultItem> score(const Serving& serving, const std::vector<WorkItem>& items) {
-    std::vector<ResultItem> results(items.size());
-#pragma omp parallel for schedule(dynamic) num_threads(serving.threads)
-    for (std::size_t i = 0; i < items.size(); ++i)
-        results[i] = ResultItem{items[i].index,
-                                evaluate_safely(*serving.problem, items[i].params, omp_get_thread_num())};
-    return results;
+// Sends back every result that is ready, one message each; returns how many.
+std::size_t return_results(World& world, ThreadEvaluator& evaluator, std::chrono::microseconds wait) {
+    std::size_t sent = 0;
+    auto send = [&](ScoredBirth&& scored) {
+        world.post(0, tag_result, encode_results({ResultItem{scored.birth, std::move(scored.evaluation)}}));
+        ++sent;
+    };
+    if (std::optional<ScoredBirth> first = evaluator.next(std::chrono::duration_cast<std::chrono::milliseconds>(wait)))
+        send(std::move(*first));
+    for (ScoredBirth& scored : evaluator.take_ready()) send(std::move(scored));
+    return sent;
 }
 }  // namespace
 
@@ -51,25 +57,41 @@ int serve(World& world) {
     std::signal(SIGINT, SIG_IGN);
     std::signal(SIGTERM, SIG_IGN);
     Serving serving;
+    World::Backoff backoff;
     for (;;) {
-        const Message m = world.receive(0, World::any_tag);
-        switch (m.tag) {
+        world.progress();
+        std::optional<Message> m = world.try_receive(0, World::any_tag);
+        if (!m) {
+            // Results first: a finished genome goes back at once, and its
+            // thread already has the next one from the queue rank 0 keeps full.
+            if (serving.evaluator && serving.evaluator->outstanding() > 0) {
+                if (return_results(world, *serving.evaluator, std::chrono::microseconds(0)) > 0) {
+                    backoff.reset();
+                    continue;
+                }
+            }
+            backoff.pause();
+            continue;
+        }
+        backoff.reset();
+        switch (m->tag) {
         case tag_quit:
-            return decode_int(m.bytes);
+            world.flush();
+            return decode_int(m->bytes);
         case tag_config: {
-            const std::string failure = start_session(serving, m.bytes);
+            const std::string failure = start_session(serving, m->bytes);
             if (failure.empty())
-                world.send(0, tag_ready, encode_ready({serving.threads, cpu_kind()}));
+                world.post(0, tag_ready, encode_ready({serving.threads, cpu_kind()}));
             else
-                world.send(0, tag_failed, failure);
+                world.post(0, tag_failed, failure);
             break;
         }
         case tag_work:
-            if (!serving.problem) throw ProtocolError("work before a config");
-            world.send(0, tag_result, encode_results(score(serving, decode_work(m.bytes))));
+            if (!serving.evaluator) throw ProtocolError("work before a config");
+            for (WorkItem& item : decode_work(m->bytes)) serving.evaluator->submit(item.index, item.params);
             break;
         default:
-            throw ProtocolError("unknown message tag " + std::to_string(m.tag));
+            throw ProtocolError("unknown message tag " + std::to_string(m->tag));
         }
     }
 }

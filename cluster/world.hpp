@@ -5,6 +5,8 @@
 // initialises MPI, the destructor finalises it; messages are byte strings
 // with a tag (protocol.hpp). Only the main thread calls MPI (FUNNELED).
 #include <functional>
+#include <list>
+#include <optional>
 #include <string>
 
 namespace morphogen::cluster {
@@ -36,6 +38,26 @@ public:
     // process leaves its core to the threads that compute; `idle` (if set) is
     // called between polls.
     Message receive(int source, int tag, const std::function<void()>& idle = {});
+    // The next message from `source` with `tag` if one has arrived, without waiting.
+    std::optional<Message> try_receive(int source, int tag);
+    // Starts sending `bytes` and returns at once (MPI_Isend); the bytes are
+    // kept until the send completes. Sends in flight are finished by
+    // progress() (without waiting) and flush() (waiting, calling `idle`).
+    void post(int destination, int tag, std::string bytes);
+    void progress();
+    void flush(const std::function<void()>& idle = {});
+    // Sleeps a little, longer each time nothing happened (20 µs doubling to
+    // 250 µs; reset() after something did): how every waiting loop here
+    // waits, so a waiting process leaves its core to the threads that compute.
+    class Backoff {
+    public:
+        void pause();
+        void reset() { us_ = 20; }
+
+    private:
+        int us_ = 20;
+    };
+
     // Ends every process of the job with `code` (MPI_Abort); for the rare
     // failure that leaves messages in flight, where waiting could hang.
     [[noreturn]] void abort(int code);
@@ -44,8 +66,10 @@ public:
     static constexpr int any_tag = -1;
 
 private:
+    struct Posted;  // an MPI request and the bytes it sends
     int rank_ = 0;
     int size_ = 1;
+    std::list<Posted> posted_;
 };
 
 }  // namespace morphogen::cluster

@@ -58,6 +58,8 @@ public:
     // Returns null if absent. The caller must set resolved(key) itself.
     const nlohmann::json* raw(const std::string& key);
     void set_resolved(const std::string& key, nlohmann::json value);
+    // Leaves `key` out of the resolved object (a key that does not apply).
+    void drop_resolved(const std::string& key) { resolved_.erase(key); }
 
     // Report unknown keys (with a suggestion). Call after all reads.
     void finish();

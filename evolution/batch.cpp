@@ -1,5 +1,7 @@
 #include "evolution/batch.hpp"
 
+#include "evolution/pipeline.hpp"
+
 #include <omp.h>
 
 #include <cmath>
@@ -45,37 +47,8 @@ Evaluation evaluate_safely(const Problem& problem, std::span<const double> param
 
 int resolve_thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
-namespace {
-// Moves an evaluation's results into its child (shared by both paths, so they
-// cannot disagree on a bit).
-void take_evaluation(Individual& child, std::string& error, Evaluation&& e) {
-    child.fitness = e.valid ? e.score : invalid_fitness;
-    child.size = e.size;
-    child.descriptors = std::move(e.descriptors);
-    error = e.valid ? std::string() : std::move(e.error);
-}
-
-// Conceiving costs microseconds per child, so it runs on this thread: an
-// OpenMP region here would leave its threads spinning while the remote
-// evaluator waits (libgomp's idle threads spin before they sleep).
-BredBatch breed_remotely(BatchEvaluator& remote, std::uint64_t first, std::size_t count,
-                         const std::function<Individual(std::uint64_t birth)>& conceive) {
-    BredBatch out;
-    out.children.resize(count);
-    out.errors.resize(count);
-    for (std::size_t i = 0; i < count; ++i) out.children[i] = conceive(first + i);
-    std::vector<std::vector<double>> genomes(count);
-    for (std::size_t i = 0; i < count; ++i) genomes[i] = out.children[i].params;
-    std::vector<Evaluation> scored = remote.evaluate(genomes);
-    if (scored.size() != count) throw std::logic_error("remote evaluator returned a wrong number of evaluations");
-    for (std::size_t i = 0; i < count; ++i) take_evaluation(out.children[i], out.errors[i], std::move(scored[i]));
-    return out;
-}
-}  // namespace
-
 BredBatch breed_batch(Problem& problem, std::uint64_t first, std::size_t count, int threads,
-                      const std::function<Individual(std::uint64_t birth)>& conceive, BatchEvaluator* remote) {
-    if (remote != nullptr) return breed_remotely(*remote, first, count, conceive);
+                      const std::function<Individual(std::uint64_t birth)>& conceive) {
     threads = resolve_thread_count(threads);
     problem.prepare(threads);
     BredBatch out;

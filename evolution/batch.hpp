@@ -1,5 +1,5 @@
 #pragma once
-// The batch step both algorithms share (docs/algorithm.md §8.4): the children of a
+// The batch step both algorithms share (docs/algorithm.md §8.4, batch schedule): the children of a
 // run of consecutive births are conceived from a frozen snapshot and evaluated
 // in parallel (OpenMP, dynamic schedule); the caller then inserts them in
 // birth order. Each child depends only on (snapshot, seed, birth index), so
@@ -27,31 +27,15 @@ struct BredBatch {
     std::vector<std::string> errors;   // parallel to children: why it is invalid ("" if valid)
 };
 
-// Scores the genomes of a batch somewhere else (other processes: cluster/).
-// evaluate() returns one Evaluation per genome, in order, each exactly what
-// evaluate_safely(problem, genome, ...) gives for the same problem; it may
-// throw only for failures of its own (a lost connection), never for a genome.
-class BatchEvaluator {
-public:
-    virtual ~BatchEvaluator() = default;
-    virtual std::vector<Evaluation> evaluate(const std::vector<std::vector<double>>& genomes) = 0;
-    // Where the genomes go, for the run's log ("3 worker processes, 6 threads").
-    virtual std::string description() const = 0;
-    // What it cost the calling process, for the run's log at the end ("" if nothing to say).
-    virtual std::string summary() const { return {}; }
-};
-
 // Births [first, first + count): conceive(birth) makes each child (it must
 // only read state that stays unchanged during the call, and may run on any
 // thread), then the problem scores it with worker = the OpenMP thread number.
 // Calls problem.prepare(threads) first; threads <= 0 means OpenMP's default.
 // Failures outside evaluation (e.g. std::bad_alloc while conceiving) are
-// rethrown after the parallel region. With a `remote` evaluator the children
-// are conceived here (on the calling thread; `threads` is unused) and scored
-// by it instead: the same bytes, since a child's score depends on its genome alone.
+// rethrown after the parallel region. Runs use BirthPipeline (pipeline.hpp);
+// this is the batch schedule's step for tests and tools.
 BredBatch breed_batch(Problem& problem, std::uint64_t first, std::size_t count, int threads,
-                      const std::function<Individual(std::uint64_t birth)>& conceive,
-                      BatchEvaluator* remote = nullptr);
+                      const std::function<Individual(std::uint64_t birth)>& conceive);
 
 // Replaces `best` by `child` if the child is valid and strictly fitter (so the
 // earliest of equally fit individuals stays).

@@ -21,49 +21,68 @@ MapElites::MapElites(const MapElitesParams& params, std::uint64_t seed, Problem&
     blocks_ = check_blocks(problem_.blocks(), problem_.dimension());
 }
 
-EliteBatchOutcome MapElites::step(int threads, BatchEvaluator* remote) {
-    const std::size_t count = batch_size(state_.births, population(), params_.batch);
-    const std::size_t dimension = problem_.dimension();
-    const BirthRules rules = this->rules();
-    // The parents of the whole batch: the elites before it, in cell-index order.
-    const std::vector<const Individual*> snapshot = state_.archive.snapshot();
+Individual MapElites::conceive_from(const std::vector<const Individual*>& snapshot, std::uint64_t birth) const {
     ParentPicker pick;
     if (!snapshot.empty()) {
         pick = [&snapshot](RandomStream& stream) -> const Individual& { return *snapshot[stream.below(snapshot.size())]; };
     }
-    BredBatch bred = breed_batch(problem_, state_.births, count, threads, [&](std::uint64_t birth) {
-        return conceive_birth(rules, blocks_, dimension, seed_, birth, pick);
-    }, remote);
+    return conceive_birth(rules(), blocks_, problem_.dimension(), seed_, birth, pick);
+}
 
+Individual MapElites::conceive(std::uint64_t birth) const {
+    if (!snapshot_) snapshot_ = state_.archive.snapshot();
+    return conceive_from(*snapshot_, birth);
+}
+
+Inserted MapElites::insert(Individual& child, std::string& error) {
+    last_cell_.reset();
+    if (child.valid()) {
+        last_cell_ = state_.archive.cell_of(child.descriptors);
+        if (!last_cell_) {
+            error = std::to_string(child.descriptors.size()) + " descriptors, the archive has " +
+                    std::to_string(state_.archive.dimensions());
+            child.fitness = invalid_fitness;
+            child.size = 0.0;
+            child.descriptors.clear();
+        }
+    }
+    if (!child.valid()) ++state_.invalid_in_generation;
+    keep_best(state_.best, child);
+    last_placement_ = state_.archive.insert(child);
+    if (last_placement_ == Archive::Placement::filled) {
+        ++state_.new_cells_in_generation;
+        snapshot_.reset();
+    }
+    ++state_.births;
+    Inserted what;
+    if (at_generation_end()) {
+        what.ends_generation = true;
+        what.generation_invalid = state_.invalid_in_generation;
+        what.generation_new_cells = state_.new_cells_in_generation;
+        state_.invalid_in_generation = 0;
+        state_.new_cells_in_generation = 0;
+    }
+    return what;
+}
+
+EliteBatchOutcome MapElites::step(int threads) {
+    const std::size_t count = batch_size(state_.births, population(), params_.batch);
+    // The parents of the whole batch: the elites before it, in cell-index order.
+    const std::vector<const Individual*> snapshot = state_.archive.snapshot();
+    BredBatch bred = breed_batch(problem_, state_.births, count, threads,
+                                 [&](std::uint64_t birth) { return conceive_from(snapshot, birth); });
     EliteBatchOutcome out;
     out.children = std::move(bred.children);
     out.errors = std::move(bred.errors);
     out.cells.resize(count);
     out.placements.resize(count, Archive::Placement::rejected);
     for (std::size_t i = 0; i < count; ++i) {
-        Individual& child = out.children[i];
-        if (child.valid()) {
-            out.cells[i] = state_.archive.cell_of(child.descriptors);
-            if (!out.cells[i]) {
-                out.errors[i] = std::to_string(child.descriptors.size()) + " descriptors, the archive has " +
-                                std::to_string(state_.archive.dimensions());
-                child.fitness = invalid_fitness;
-                child.size = 0.0;
-                child.descriptors.clear();
-            }
-        }
-        if (!child.valid()) ++state_.invalid_in_generation;
-        keep_best(state_.best, child);
-        out.placements[i] = state_.archive.insert(child);
-        if (out.placements[i] == Archive::Placement::filled) ++state_.new_cells_in_generation;
-        ++state_.births;
-    }
-    if (at_generation_end()) {
-        out.ends_generation = true;
-        out.generation_invalid = state_.invalid_in_generation;
-        out.generation_new_cells = state_.new_cells_in_generation;
-        state_.invalid_in_generation = 0;
-        state_.new_cells_in_generation = 0;
+        const Inserted what = insert(out.children[i], out.errors[i]);
+        out.cells[i] = last_cell_;
+        out.placements[i] = last_placement_;
+        out.ends_generation = what.ends_generation;
+        out.generation_invalid = what.generation_invalid;
+        out.generation_new_cells = what.generation_new_cells;
     }
     return out;
 }

@@ -15,6 +15,7 @@
 #include "evolution/generation_count.hpp"
 #include "evolution/individual.hpp"
 #include "evolution/operators.hpp"
+#include "evolution/pipeline.hpp"
 #include "evolution/problem.hpp"
 
 #include <cstdint>
@@ -53,17 +54,23 @@ struct EliteBatchOutcome {
     std::uint64_t generation_new_cells = 0;    // if so: cells first filled in that generation
 };
 
-class MapElites : public GenerationCount<MapElites> {
+class MapElites : public GenerationCount<MapElites>, public Breeder {
 public:
     // Throws std::invalid_argument for parameters out of range or blocks that
     // do not tile the problem's parameters. `state` is trusted to match.
     MapElites(const MapElitesParams& params, std::uint64_t seed, Problem& problem, MapElitesState state);
 
-    // One batch with `threads` workers (<= 0: OpenMP's default). A child
-    // whose evaluation throws, or gives a non-finite score or descriptor, or
-    // a descriptor vector of the wrong length, is invalid and enters nowhere.
-    // With `remote`, the batch is scored by it (batch.hpp), with the same result.
-    EliteBatchOutcome step(int threads, BatchEvaluator* remote = nullptr);
+    // One batch of the batch schedule with `threads` workers (<= 0:
+    // OpenMP's default), as SteadyStateGA::step. A child whose evaluation
+    // throws, or gives a non-finite score or descriptor, or a descriptor
+    // vector of the wrong length, is invalid and enters nowhere.
+    EliteBatchOutcome step(int threads);
+
+    // Breeder (pipeline.hpp): parents from the archive as it is now. Not
+    // safe to call concurrently (it caches the archive's snapshot).
+    std::uint64_t births() const override { return state_.births; }
+    Individual conceive(std::uint64_t birth) const override;
+    Inserted insert(Individual& child, std::string& error) override;
 
     const MapElitesState& state() const { return state_; }
     const MapElitesParams& params() const { return params_; }
@@ -78,7 +85,16 @@ private:
     std::uint64_t seed_;
     Problem& problem_;
     std::vector<Block> blocks_;
+    // Birth `birth` with parents drawn from `snapshot` (the elites in cell order).
+    Individual conceive_from(const std::vector<const Individual*>& snapshot, std::uint64_t birth) const;
+
     MapElitesState state_;
+    // The archive's snapshot for conceive(), rebuilt after a cell is first filled
+    // (a replaced elite keeps its place: the map's nodes do not move).
+    mutable std::optional<std::vector<const Individual*>> snapshot_;
+    // What insert() did with its child: its cell and placement.
+    std::optional<std::uint64_t> last_cell_;
+    Archive::Placement last_placement_ = Archive::Placement::rejected;
 };
 
 }  // namespace morphogen

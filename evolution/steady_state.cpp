@@ -23,29 +23,37 @@ SteadyStateGA::SteadyStateGA(const GaParams& params, std::uint64_t seed, Problem
     blocks_ = check_blocks(problem_.blocks(), problem_.dimension());
 }
 
-BatchOutcome SteadyStateGA::step(int threads, BatchEvaluator* remote) {
-    const std::size_t count = batch_size(state_.births, params_);
-    const std::size_t dimension = problem_.dimension();
-    const std::vector<Individual>& snapshot = state_.population;  // not modified until the batch is bred
-    BredBatch bred = breed_batch(problem_, state_.births, count, threads, [&](std::uint64_t birth) {
-        return conceive(snapshot, params_, blocks_, dimension, seed_, birth);
-    }, remote);
+Individual SteadyStateGA::conceive(std::uint64_t birth) const {
+    return morphogen::conceive(state_.population, params_, blocks_, problem_.dimension(), seed_, birth);
+}
 
+Inserted SteadyStateGA::insert(Individual& child, std::string&) {
+    Inserted what;
+    if (!child.valid()) ++state_.invalid_in_generation;
+    keep_best(state_.best, child);
+    last_inserted_ = insert_child(state_.population, child, static_cast<std::size_t>(params_.population));
+    ++state_.births;
+    if (at_generation_end()) {
+        what.ends_generation = true;
+        what.generation_invalid = state_.invalid_in_generation;
+        state_.invalid_in_generation = 0;
+    }
+    return what;
+}
+
+BatchOutcome SteadyStateGA::step(int threads) {
+    const std::size_t count = batch_size(state_.births, params_);
+    BredBatch bred = breed_batch(problem_, state_.births, count, threads,
+                                 [&](std::uint64_t birth) { return conceive(birth); });
     BatchOutcome out;
     out.children = std::move(bred.children);
     out.errors = std::move(bred.errors);
     out.inserted.resize(count);
     for (std::size_t i = 0; i < count; ++i) {
-        const Individual& child = out.children[i];
-        if (!child.valid()) ++state_.invalid_in_generation;
-        keep_best(state_.best, child);
-        out.inserted[i] = insert_child(state_.population, child, static_cast<std::size_t>(params_.population));
-        ++state_.births;
-    }
-    if (at_generation_end()) {
-        out.ends_generation = true;
-        out.generation_invalid = state_.invalid_in_generation;
-        state_.invalid_in_generation = 0;
+        const Inserted what = insert(out.children[i], out.errors[i]);
+        out.inserted[i] = last_inserted_;
+        out.ends_generation = what.ends_generation;
+        out.generation_invalid = what.generation_invalid;
     }
     return out;
 }

@@ -12,6 +12,7 @@
 #include "evolution/ga_params.hpp"
 #include "evolution/generation_count.hpp"
 #include "evolution/individual.hpp"
+#include "evolution/pipeline.hpp"
 #include "evolution/problem.hpp"
 
 #include <cstdint>
@@ -37,18 +38,25 @@ struct BatchOutcome {
     std::uint64_t generation_invalid = 0;  // if so: invalid births in that generation
 };
 
-class SteadyStateGA : public GenerationCount<SteadyStateGA> {
+class SteadyStateGA : public GenerationCount<SteadyStateGA>, public Breeder {
 public:
     // Throws std::invalid_argument for parameters out of range or blocks that
     // do not tile the problem's parameters. `state` is trusted to match (see
     // ga_state_from_json for checking one read from a file).
     SteadyStateGA(const GaParams& params, std::uint64_t seed, Problem& problem, GaState state = {});
 
-    // One batch with `threads` workers (<= 0: OpenMP's default). Exceptions
-    // from the problem make that child invalid; only failures outside
-    // evaluation (e.g. out of memory) propagate, after the parallel region.
-    // With `remote`, the batch is scored by it (batch.hpp), with the same result.
-    BatchOutcome step(int threads, BatchEvaluator* remote = nullptr);
+    // One batch of the batch schedule with `threads` workers (<= 0:
+    // OpenMP's default): births conceived from the population as it is, bred
+    // in parallel, inserted in order (what BirthPipeline does with a batch
+    // schedule of params.batch). Exceptions from the problem make that child
+    // invalid; only failures outside evaluation (e.g. out of memory)
+    // propagate, after the parallel region.
+    BatchOutcome step(int threads);
+
+    // Breeder (pipeline.hpp): tournament parents from the population as it is now.
+    std::uint64_t births() const override { return state_.births; }
+    Individual conceive(std::uint64_t birth) const override;
+    Inserted insert(Individual& child, std::string& error) override;
 
     const GaState& state() const { return state_; }
     const GaParams& params() const { return params_; }
@@ -60,6 +68,7 @@ private:
     Problem& problem_;
     std::vector<Block> blocks_;
     GaState state_;
+    bool last_inserted_ = false;  // whether insert()'s child entered the population
 };
 
 }  // namespace morphogen

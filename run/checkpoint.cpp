@@ -34,6 +34,11 @@ json content_of(const RunState& s, GenomeBlobWriter* genomes) {
         content["map_elites"] = map_elites_state_to_json(*s.elites, genomes);
     else
         content["ga"] = ga_state_to_json(s.ga, genomes);
+    if (!s.pending.empty()) {
+        json pending = json::array();
+        for (const Individual& child : s.pending) pending.push_back(individual_to_json(child, genomes));
+        content["pending"] = std::move(pending);
+    }
     return content;
 }
 
@@ -89,11 +94,11 @@ std::size_t genome_doubles(const RunState& s) {
     if (s.elites) {
         const auto& elites = s.elites->archive.elites();
         const std::size_t D = s.elites->best ? s.elites->best->params.size() : 0;
-        return (elites.size() + 1) * D;
+        return (elites.size() + 1 + s.pending.size()) * D;
     }
     const std::size_t D = s.ga.best ? s.ga.best->params.size()
                                     : (s.ga.population.empty() ? 0 : s.ga.population.front().params.size());
-    return (s.ga.population.size() + 1) * D;
+    return (s.ga.population.size() + 1 + s.pending.size()) * D;
 }
 
 // A verified envelope: the content as stored and, in format 2, the binary part
@@ -200,6 +205,7 @@ void inline_genomes(json& content, GenomeBlobReader& genomes) {
         if (me.contains("archive")) each(me["archive"], "elites", "map_elites.archive.elites");
         if (me.contains("best")) inline_genome(me["best"], genomes, "map_elites.best");
     }
+    each(content, "pending", "pending");
     genomes.check_all_taken("the checkpoint");
 }
 }  // namespace
@@ -278,7 +284,7 @@ RunState load_checkpoint(const std::filesystem::path& path) {
         if (config.run.seed != state.seed) throw refuse("its seed differs from its config's run.seed");
         const std::size_t dimension = parameter_count(config.network.layers());
         const auto P = static_cast<std::uint64_t>(config.evolution.population);
-        if (content.size() != 6) throw refuse("unexpected keys in its content");
+        if (content.size() != (content.contains("pending") ? 7u : 6u)) throw refuse("unexpected keys in its content");
         // Format 2: the genomes come from the binary part, never through JSON numbers.
         std::optional<GenomeBlobReader> blob;
         if (envelope.version == 2) {
@@ -288,6 +294,14 @@ RunState load_checkpoint(const std::filesystem::path& path) {
             blob.emplace(envelope.genomes, envelope.count, envelope.dimension);
         }
         GenomeBlobReader* genomes = blob ? &*blob : nullptr;
+        // Before the search state, whose reader checks that every genome was taken.
+        if (content.contains("pending")) {
+            const json& pending = content.at("pending");
+            if (!pending.is_array() || pending.empty()) throw refuse("its pending births are not a non-empty array");
+            for (std::size_t i = 0; i < pending.size(); ++i)
+                state.pending.push_back(
+                    individual_from_json(pending[i], dimension, "pending[" + std::to_string(i) + "]", genomes));
+        }
         if (config.algorithm == Algorithm::map_elites) {
             if (!content.contains("map_elites")) throw refuse("its config is a map_elites run but it holds no map_elites state");
             state.elites = map_elites_state_from_json(content.at("map_elites"), config.qd.archive, config.qd.descriptors,

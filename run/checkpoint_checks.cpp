@@ -224,6 +224,29 @@ void check_history_by_replay(const RunState& s, const std::vector<LineageRow>& r
 }
 }  // namespace
 
+// The pending births are exactly those the run's schedule keeps (births
+// conceived from an earlier state), unevaluated, with parents that existed in
+// the state each was conceived from.
+void check_pending(const RunState& s, const ExperimentConfig& config, std::uint64_t births) {
+    const BirthSchedule schedule = birth_schedule(config.evolution);
+    const std::uint64_t begin = schedule.kept_begin(births), end = schedule.kept_end(births);
+    if (s.pending.size() != end - begin)
+        contradiction("pending holds " + std::to_string(s.pending.size()) + " births, but after " +
+                      std::to_string(births) + " births the schedule (" + schedule.describe() + ") keeps " +
+                      std::to_string(end - begin));
+    for (std::size_t i = 0; i < s.pending.size(); ++i) {
+        const Individual& child = s.pending[i];
+        const std::string where = at("pending", i);
+        if (child.id != begin + i)
+            contradiction(where + " is birth " + std::to_string(child.id) + ", expected " + std::to_string(begin + i));
+        if (child.valid() || child.size != 0.0) contradiction(where + " has a fitness or size before its evaluation");
+        const std::uint64_t source = schedule.source(child.id);
+        if ((child.parent1 && *child.parent1 >= source) || (child.parent2 && *child.parent2 >= source))
+            contradiction(where + " has a parent born after the " + std::to_string(source) +
+                          " births it was conceived from");
+    }
+}
+
 void check_checkpoint_content(const RunState& s, const ExperimentConfig& config) {
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
     const SearchView v = view_of(s);
@@ -262,6 +285,7 @@ void check_checkpoint_content(const RunState& s, const ExperimentConfig& config)
                 contradiction("history: new_cells or coverage out of range in generation " + std::to_string(row.generation));
     check_history(s, P);
     check_last_row(s, config, P);
+    check_pending(s, config, births);
 }
 
 void check_checkpoint_against_lineage(const RunState& s, std::string_view lineage, std::uint64_t P,

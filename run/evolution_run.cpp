@@ -8,6 +8,7 @@
 #include "run/search_drivers.hpp"
 #include "run/stop_signals.hpp"
 #include "run/worker_threads.hpp"
+#include "evolution/thread_evaluator.hpp"
 
 #include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/sinks/stdout_color_sinks.h>
@@ -58,42 +59,63 @@ RunLoggers make_run_loggers(const RunPaths& paths) {
 void set_remote_evaluator_factory(RemoteEvaluatorFactory factory) { g_remote_factory = std::move(factory); }
 
 namespace {
+// The threads this process scores with: run.threads capped at the cores and
+// at the births that can be in flight at once (more would have nothing to do).
+int scoring_threads(const ExperimentConfig& config, const BirthSchedule& schedule, spdlog::logger& log) {
+    const int threads = std::min<long long>(resolve_threads(config.run.threads), static_cast<long long>(schedule.width));
+    if (config.run.threads > threads)
+        log.warn("run.threads {} is more than can run at once here ({} cores, {} births in flight: {}): using {} "
+                 "threads",
+                 config.run.threads, omp_get_num_procs(), schedule.width, schedule.describe(), threads);
+    return threads;
+}
+
 template <class Driver>
 int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
     const ExperimentConfig& config = s.config;
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
     const std::uint64_t target_births = (config.run.generations + 1) * P;
-    // No more threads than one step has births to score.
-    const int threads = std::min(resolve_threads(config.run.threads), config.evolution.batch);
+    const BirthSchedule schedule = birth_schedule(config.evolution);
     auto& log = s.log.both;
-    if (config.run.threads > threads)
-        log->warn("run.threads {} is more than can run at once here ({} cores, batch {}): using {} threads",
-                  config.run.threads, omp_get_num_procs(), config.evolution.batch, threads);
-    start_worker_threads(threads);
-    const std::unique_ptr<BatchEvaluator> remote = g_remote_factory ? g_remote_factory(config, s.paths.dir) : nullptr;
+
+    std::unique_ptr<GenomeEvaluator> evaluator = g_remote_factory ? g_remote_factory(config, s.paths.dir) : nullptr;
+    const bool remote = evaluator != nullptr;
+    if (!remote) evaluator = std::make_unique<ThreadEvaluator>(problem, scoring_threads(config, schedule, *log));
 
     Progress progress(s.log.both, s.log.file_only, target_births, config.run.generations);
-    log->info("run directory {}: population {}, generation {}/{} ({} births done), {} threads, seed {}",
+    log->info("run directory {}: population {}, generation {}/{} ({} births done), {}, {}, seed {}",
               s.paths.dir.string(), P, ga.completed_generations(), config.run.generations, ga.births(),
-              threads, config.run.seed);
-    if (remote) log->info("genomes are grown and scored by {}", remote->description());
+              remote ? "scored over MPI" : evaluator->description(), schedule.describe(), config.run.seed);
+    if (remote) log->info("genomes are grown and scored by {}", evaluator->description());
+    if (schedule.kind == ScheduleKind::pipeline && schedule.width < 2 * static_cast<std::uint64_t>(evaluator->capacity()))
+        log->warn("evolution.lag {} keeps fewer than 2 genomes in flight per thread ({} threads): some will wait; "
+                  "a larger lag keeps them busy (docs/performance.md)",
+                  schedule.width, evaluator->capacity());
 
     const auto session_start = Clock::now();
     const double elapsed_before = s.state.elapsed_s;
     auto generation_start = session_start;
     std::uint64_t generation_first_birth = ga.births();
+    BirthPipeline pipeline(schedule, ga.breeder(), *evaluator, std::move(s.state.pending));
+    std::string rows;  // lineage.csv rows not yet written
 
     // spdlog reports a failed log write to the handler, not to us: check it.
     auto check_log = [&] {
         if (!s.log.failure->empty()) throw IoError(*s.log.failure);
     };
-    auto checkpoint = [&] {
+    auto write_rows = [&] {
+        s.lineage.write(rows);
+        rows.clear();
         check_log();
+    };
+    auto checkpoint = [&] {
+        write_rows();
         s.history.sync();
         s.lineage.sync();
         s.state.config = config.resolved;
         s.state.seed = config.run.seed;
         ga.save(s.state);
+        s.state.pending = pipeline.kept();
         s.state.lineage_bytes = s.lineage.size();
         s.state.lineage_hash = s.lineage.hash_hex();
         s.state.elapsed_s = elapsed_before + seconds_since(session_start);
@@ -101,38 +123,25 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
         if (config.algorithm == Algorithm::map_elites) write_file_atomically(s.paths.archive, ga.archive_text());
         save_checkpoint(s.paths.checkpoint, s.state);
     };
+    auto best_fitness = [&] { return ga.best() ? std::optional<double>(ga.best()->fitness) : std::nullopt; };
 
-    progress.batch(ga.births(), ga.completed_generations(),
-                   ga.best() ? std::optional<double>(ga.best()->fitness) : std::nullopt);
-    while (ga.births() < target_births) {
-        if (StopSignals::requested()) {
-            checkpoint();
+    const auto on_insert = [&](const Individual& child, const std::string& error, const Inserted& what) {
+        rows += format_lineage_row(child, s.lineage_descriptor_columns.value_or(config.qd.descriptors.size()));
+        if (!error.empty()) {
             progress.clear();
-            log->warn("stopped by signal {} after {} births; checkpoint saved. Continue with: morphogen resume {}",
-                      StopSignals::signal_number(), ga.births(), s.paths.dir.string());
-            return exit_code::interrupted;
+            log->warn("birth {} is invalid: {}", child.id, error);
         }
-        const StepResult out = ga.step(threads, remote.get());
-        std::string rows;
-        for (std::size_t i = 0; i < out.children.size(); ++i) {
-            rows += format_lineage_row(out.children[i], s.lineage_descriptor_columns.value_or(config.qd.descriptors.size()));
-            if (!out.errors[i].empty()) {
-                progress.clear();
-                log->warn("birth {} is invalid: {}", out.children[i].id, out.errors[i]);
-            }
-        }
-        s.lineage.write(rows);
-        check_log();
         const std::uint64_t births = ga.births();
-        progress.batch(births, births / P, ga.best() ? std::optional<double>(ga.best()->fitness) : std::nullopt);
-        if (!out.ends_generation) continue;
+        progress.update(births, births / P, best_fitness());
+        if (!what.ends_generation) return;
+        write_rows();
 
         const std::uint64_t generation = births / P - 1;
         HistoryRow row;
         row.generation = generation;
         row.births = births;
-        ga.fill(row, out);
-        row.invalid = out.generation_invalid;
+        ga.fill(row, what);
+        row.invalid = what.generation_invalid;
         const double generation_seconds = seconds_since(generation_start);
         row.births_per_s =
             generation_seconds > 0 ? static_cast<double>(births - generation_first_birth) / generation_seconds : 0.0;
@@ -151,9 +160,18 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
         if (last || every(config.run.checkpoint_every)) checkpoint();
         generation_start = Clock::now();
         generation_first_birth = births;
+    };
+
+    progress.update(ga.births(), ga.completed_generations(), best_fitness());
+    if (!pipeline.run(target_births, on_insert, [] { return StopSignals::requested(); })) {
+        checkpoint();
+        progress.clear();
+        log->warn("stopped by signal {} after {} births; checkpoint saved. Continue with: morphogen resume {}",
+                  StopSignals::signal_number(), ga.births(), s.paths.dir.string());
+        return exit_code::interrupted;
     }
     progress.clear();
-    if (remote && !remote->summary().empty()) s.log.file_only->info("{}", remote->summary());
+    if (remote && !evaluator->summary().empty()) s.log.file_only->info("{}", evaluator->summary());
     if (ga.best())
         log->info("done: generation {} reached; best fitness {} (individual {})", config.run.generations,
                   format_number(ga.best()->fitness), ga.best()->id);

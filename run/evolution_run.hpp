@@ -1,11 +1,12 @@
 #pragma once
-// The loop shared by `evolve` and `resume`: batches of births until
-// run.generations is complete or a stop is requested, writing lineage rows
-// after every batch and, at generation ends, a history row, the best mesh
-// (every run.export_every) and a checkpoint (every run.checkpoint_every and at
-// the end). Rows written after the last checkpoint are cut off by a resume,
-// so the files always equal those of an uninterrupted run.
-#include "evolution/batch.hpp"
+// The loop shared by `evolve` and `resume`: the birth pipeline
+// (evolution/pipeline.hpp) until run.generations is complete or a stop is
+// requested, writing at generation ends the generation's lineage rows, a
+// history row, the best mesh (every run.export_every) and a checkpoint (every
+// run.checkpoint_every and at the end). Rows written after the last
+// checkpoint are cut off by a resume, so the files always equal those of an
+// uninterrupted run.
+#include "evolution/genome_evaluator.hpp"
 #include "run/append_file.hpp"
 #include "run/checkpoint.hpp"
 #include "run/experiment_config.hpp"
@@ -53,12 +54,12 @@ struct RunSession {
 // then intact and the run can be resumed.
 int run_session(RunSession& session, GrowthProblem& problem);
 
-// Where run_session has its batches scored when the process is one of several
+// Where run_session has its genomes scored when the process is one of several
 // (cluster/: other MPI processes): called once per session with the config
 // and the run directory; nullptr, or no factory (the default), scores them
-// here with OpenMP.
+// here with a ThreadEvaluator of run.threads threads.
 using RemoteEvaluatorFactory =
-    std::function<std::unique_ptr<BatchEvaluator>(const ExperimentConfig&, const std::filesystem::path& run_dir)>;
+    std::function<std::unique_ptr<GenomeEvaluator>(const ExperimentConfig&, const std::filesystem::path& run_dir)>;
 void set_remote_evaluator_factory(RemoteEvaluatorFactory factory);
 
 }  // namespace morphogen

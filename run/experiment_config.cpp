@@ -56,7 +56,26 @@ GaParams read_evolution_params(ObjectReader& reader, Algorithm* algorithm) {
     p.crossover = reader.number("crossover", p.crossover, 0.0, 1.0);
     p.mutation_rate = reader.number("mutation_rate", p.mutation_rate, 0.0, 1.0);
     p.mutation_sigma = reader.number("mutation_sigma", p.mutation_sigma, 0.0, 1000.0);
+    // A config that sets a batch size and no schedule keeps the batch
+    // schedule it was written for (every run made before the pipeline does).
+    const bool batch_given = reader.raw("batch") != nullptr;
+    const bool schedule_given = reader.raw("schedule") != nullptr;
+    const bool lag_given = reader.raw("lag") != nullptr;
+    const std::string schedule =
+        reader.choice("schedule", batch_given ? "batch" : "pipeline", {"pipeline", "batch"});
+    p.schedule = schedule == "batch" ? ScheduleKind::batch : ScheduleKind::pipeline;
+    p.lag = static_cast<int>(reader.integer("lag", p.lag, 1, 1'000'000));
     p.batch = static_cast<int>(reader.integer("batch", p.batch, 1, 1'000'000));
+    if (p.schedule == ScheduleKind::pipeline) {
+        if (batch_given)
+            reader.issues().add(reader.path_of("batch"),
+                                "applies to schedule \"batch\" only; the pipeline's births in flight are evolution.lag");
+        reader.drop_resolved("batch");
+    } else {
+        if (lag_given) reader.issues().add(reader.path_of("lag"), "applies to schedule \"pipeline\" only");
+        reader.drop_resolved("lag");
+        if (!schedule_given) reader.drop_resolved("schedule");
+    }
     p.init_range = reader.number("init_range", p.init_range, 0.0, 1000.0);
     reader.finish();
     return p;

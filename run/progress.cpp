@@ -43,7 +43,7 @@ void Progress::clear() {
     line_shown_ = false;
 }
 
-void Progress::batch(std::uint64_t births, std::uint64_t generation, const std::optional<double>& best) {
+void Progress::update(std::uint64_t births, std::uint64_t generation, const std::optional<double>& best) {
     const auto now = std::chrono::steady_clock::now();
     if (!started_) {
         started_ = true;

@@ -1,6 +1,6 @@
 #pragma once
 // What a running `evolve`/`resume` shows. On a terminal (stderr is a tty):
-// one line rewritten in place after every batch (generation, best, births/s,
+// one line rewritten in place (at most 10 times a second) (generation, best, births/s,
 // ETA). Otherwise (a pipe, a log collector): one plain log line per
 // generation. log.txt always gets the per-generation line.
 #include "run/run_records.hpp"
@@ -20,9 +20,9 @@ public:
              std::uint64_t target_births, std::uint64_t target_generation);
     ~Progress();
 
-    // After each batch: births done so far, the generation in progress and
+    // After each birth: births done so far, the generation in progress and
     // the best score so far.
-    void batch(std::uint64_t births, std::uint64_t generation, const std::optional<double>& best);
+    void update(std::uint64_t births, std::uint64_t generation, const std::optional<double>& best);
     // After each generation.
     void generation(const HistoryRow& row);
     // Erases the live line before other output.

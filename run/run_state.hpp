@@ -20,6 +20,10 @@ struct RunState {
     std::uint64_t seed = 0; // == config.run.seed; stored on its own for readers
     GaState ga;                          // steady_state runs ("ga" in the content)
     std::optional<MapElitesState> elites; // map_elites runs ("map_elites" in the content, instead of "ga")
+    // Births conceived from a state before this one and not yet inserted
+    // (evolution/schedule.hpp: kept_begin..kept_end), in birth order, not
+    // evaluated; "pending" in the content, absent when empty.
+    std::vector<Individual> pending;
     std::vector<HistoryRow> history;
     std::uint64_t lineage_bytes = 0;  // lineage.csv length at checkpoint time
     std::string lineage_hash;         // FNV-1a 64 (hex) of those bytes

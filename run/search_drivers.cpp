@@ -26,12 +26,7 @@ void fill_fitness(HistoryRow& row, const PopulationStats& stats) {
 GaDriver::GaDriver(const ExperimentConfig& c, Problem& problem, RunState& state)
     : SearchDriver(c.evolution, c.run.seed, problem, std::move(state.ga)) {}
 
-StepResult GaDriver::step(int threads, BatchEvaluator* remote) {
-    BatchOutcome out = search_.step(threads, remote);
-    return {std::move(out.children), std::move(out.errors), out.ends_generation, out.generation_invalid, 0};
-}
-
-void GaDriver::fill(HistoryRow& row, const StepResult&) const { fill_fitness(row, summarize(search_.state().population)); }
+void GaDriver::fill(HistoryRow& row, const Inserted&) const { fill_fitness(row, summarize(search_.state().population)); }
 
 const Individual* GaDriver::exported() const {
     const Individual* best = nullptr;
@@ -52,13 +47,7 @@ EliteDriver::EliteDriver(const ExperimentConfig& c, Problem& problem, RunState& 
                    state.elites ? std::move(*state.elites) : initial_elites_state(c, threads)),
       qd_offset_(c.qd.qd_offset) {}
 
-StepResult EliteDriver::step(int threads, BatchEvaluator* remote) {
-    EliteBatchOutcome out = search_.step(threads, remote);
-    return {std::move(out.children), std::move(out.errors), out.ends_generation, out.generation_invalid,
-            out.generation_new_cells};
-}
-
-void EliteDriver::fill(HistoryRow& row, const StepResult& step) const {
+void EliteDriver::fill(HistoryRow& row, const Inserted& step) const {
     const ArchiveStats stats = archive_stats(search_.state().archive, qd_offset_);
     fill_fitness(row, stats.fitness);
     row.qd = true;

@@ -1,11 +1,10 @@
 #pragma once
 // What the run loop (evolution_run.hpp) needs of a search, for the GA and
-// MAP-Elites alike: one step (children in birth order with their errors,
-// whether it ended a generation and that generation's invalid births), the
+// MAP-Elites alike: the search as the birth pipeline drives it (Breeder), the
 // best ever, the statistics of a history row, the individual exported to
 // best/, and saving the state into the checkpoint's RunState.
-#include "evolution/batch.hpp"
 #include "evolution/map_elites.hpp"
+#include "evolution/pipeline.hpp"
 #include "evolution/steady_state.hpp"
 #include "run/experiment_config.hpp"
 #include "run/run_records.hpp"
@@ -19,14 +18,6 @@
 
 namespace morphogen {
 
-struct StepResult {
-    std::vector<Individual> children;
-    std::vector<std::string> errors;
-    bool ends_generation = false;
-    std::uint64_t generation_invalid = 0;
-    std::uint64_t generation_new_cells = 0;
-};
-
 // What every driver answers the same way from its search's state.
 template <class Search>
 class SearchDriver {
@@ -34,6 +25,7 @@ public:
     std::uint64_t births() const { return search_.state().births; }
     std::uint64_t completed_generations() const { return search_.completed_generations(); }
     const std::optional<Individual>& best() const { return search_.state().best; }
+    Breeder& breeder() { return search_; }
 
 protected:
     template <class... Args>
@@ -45,8 +37,7 @@ protected:
 class GaDriver : public SearchDriver<SteadyStateGA> {
 public:
     GaDriver(const ExperimentConfig& config, Problem& problem, RunState& state);
-    StepResult step(int threads, BatchEvaluator* remote);
-    void fill(HistoryRow& row, const StepResult& step) const;
+    void fill(HistoryRow& row, const Inserted& generation_end) const;
     // The population member that ranks highest, if it is valid.
     const Individual* exported() const;
     void save(RunState& state) const { state.ga = search_.state(); }
@@ -57,8 +48,7 @@ public:
 class EliteDriver : public SearchDriver<MapElites> {
 public:
     EliteDriver(const ExperimentConfig& config, Problem& problem, RunState& state, int threads);
-    StepResult step(int threads, BatchEvaluator* remote);
-    void fill(HistoryRow& row, const StepResult& step) const;
+    void fill(HistoryRow& row, const Inserted& generation_end) const;
     // The fittest elite (ties: the lower cell).
     const Individual* exported() const;
     void save(RunState& state) const { state.elites = search_.state(); }

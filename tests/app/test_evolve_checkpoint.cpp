@@ -160,7 +160,7 @@ TEST_CASE("a checkpoint that contradicts itself or lineage.csv is refused and le
     const std::string shorter = lineage.substr(0, lineage.rfind('\n', lineage.size() - 2) + 1);
 
     std::vector<std::pair<std::function<void(nlohmann::json&)>, std::string>> edits{
-        {[](nlohmann::json& c) { c["ga"]["births"] = 17, c["config"]["run"]["generations"] = 2; }, "lineage.csv records 16 births"},
+        {[](nlohmann::json& c) { c["ga"]["births"] = 19, c["config"]["run"]["generations"] = 2; }, "lineage.csv records 16 births"},
         {[](nlohmann::json& c) { c["ga"]["population"][0]["size"] = -1; }, "not a vertex count"},
         {[](nlohmann::json& c) { c["ga"]["population"][1]["size"] = 2.5; }, "not a vertex count"},
         {[](nlohmann::json& c) { c["ga"]["best"]["size"] = -3; }, "ga.best.size"},
