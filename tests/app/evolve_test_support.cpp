@@ -120,4 +120,11 @@ std::string q(const fs::path& p) {
     return quoted;
 }
 
+std::string tiny_pipeline_config(int generations, int population, int lag) {
+    auto config = nlohmann::json::parse(tiny_config(generations, population));
+    config["evolution"].erase("batch");
+    config["evolution"]["lag"] = lag;
+    return config.dump(1) + "\n";
+}
+
 }  // namespace morphogen::test

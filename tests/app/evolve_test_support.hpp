@@ -38,6 +38,8 @@ int wait_for(int pid, bool* killed = nullptr);
 std::string q(const fs::path& p);
 
 std::string tiny_config(int generations, int population = 8, int batch = 3);
+// The same run with the pipeline schedule (evolution.lag) instead of batches.
+std::string tiny_pipeline_config(int generations, int population = 8, int lag = 5);
 
 // history.csv without its two timing columns.
 std::string history_without_times(const fs::path& run_dir);

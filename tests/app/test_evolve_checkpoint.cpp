@@ -201,6 +201,51 @@ TEST_CASE("a checkpoint that contradicts itself or lineage.csv is refused and le
     CHECK(run_morphogen("resume '" + run.string() + "' --generations 2").code == 0);
 }
 
+TEST_CASE("a pipeline checkpoint keeps its births in flight; damaged ones are refused", "[app][checkpoint][pipeline]") {
+    TempDir tmp("checkpoint-pending");
+    write_text(tmp.path / "pipe.json", tiny_pipeline_config(2, 8, 5));
+    const auto run = tmp.path / "run";
+    REQUIRE(run_morphogen("evolve " + q(tmp.path / "pipe.json") + " --out " + q(run) + " --generations 1").code == 0);
+    const std::string good = read_text(run / "checkpoint.json");
+    const nlohmann::json content = checkpoint_content(good, "good");
+    // After 16 births with lag 5, births 16..19 were conceived from earlier states.
+    REQUIRE(content["pending"].size() == 4);
+    CHECK(content["pending"][0]["id"] == 16);
+    CHECK(content["pending"][3]["id"] == 19);
+    CHECK(content["pending"][0]["fitness"].is_null());
+
+    auto refused = [&](const nlohmann::json& changed, const std::string& why) {
+        const std::string text = checkpoint_text(changed);
+        write_text(run / "checkpoint.json", text);
+        const CliResult r = run_morphogen("resume " + q(run) + " --generations 2");
+        CHECK(r.code == 5);
+        CHECK_THAT(r.output, Catch::Contains("checkpoint") && Catch::Contains(why));
+        CHECK(read_text(run / "checkpoint.json") == text);
+    };
+    std::vector<std::pair<std::function<void(nlohmann::json&)>, std::string>> edits{
+        {[](nlohmann::json& c) { c["pending"].erase(3); }, "pending holds 3 births"},
+        {[](nlohmann::json& c) { c.erase("pending"); }, "pending holds 0 births"},
+        {[](nlohmann::json& c) { c["pending"] = nlohmann::json::array(); }, "pending births"},
+        {[](nlohmann::json& c) { c["pending"][1]["id"] = 21; }, "pending[1] is birth 21"},
+        {[](nlohmann::json& c) { c["pending"][2]["fitness"] = 1.5; }, "before its evaluation"},
+        {[](nlohmann::json& c) { c["pending"][0]["parent1"] = 13; }, "conceived from"},
+        {[](nlohmann::json& c) { c["pending"][0]["params"].erase(0); }, "parameters"},
+        {[](nlohmann::json& c) { c["pending"][0]["zzz"] = 1; }, "unknown key pending[0].zzz"},
+    };
+    for (std::size_t i = 0; i < edits.size(); ++i) {
+        CAPTURE(i, edits[i].second);
+        nlohmann::json changed = content;
+        edits[i].first(changed);
+        REQUIRE(changed != content);
+        refused(changed, edits[i].second);
+    }
+    // The untouched checkpoint resumes to the uninterrupted run's bytes.
+    write_text(run / "checkpoint.json", good);
+    REQUIRE(run_morphogen("resume " + q(run) + " --generations 2").code == 0);
+    REQUIRE(run_morphogen("evolve " + q(tmp.path / "pipe.json") + " --out " + q(tmp.path / "whole")).code == 0);
+    check_same_results(tmp.path / "whole", run);
+}
+
 TEST_CASE("invalid births and the best are checked against lineage.csv", "[app][checkpoint]") {
     // Two generations of two: births 1 and 3 invalid, birth 2 the best.
     auto born = [](std::uint64_t id, std::optional<std::uint64_t> parent, double fitness) {

@@ -105,6 +105,16 @@ TEST_CASE("evolve gives the same bytes for 1 or 2 or 8 threads", "[app][evolve][
     // and a different seed gives a different run
     REQUIRE(t.evolve(t.tmp.path / "s", "--seed 8").code == 0);
     CHECK(read_text(t.tmp.path / "s" / "lineage.csv") != read_text(t.tmp.path / "t1" / "lineage.csv"));
+
+    // The pipeline schedule too; its lag changes the run, threads never do.
+    write_text(t.config, tiny_pipeline_config(4, 8, 5));
+    for (int threads : {1, 2, 8}) REQUIRE(t.evolve(t.tmp.path / ("p" + std::to_string(threads)), arg("--threads", threads)).code == 0);
+    check_same_results(t.tmp.path / "p1", t.tmp.path / "p2");
+    check_same_results(t.tmp.path / "p1", t.tmp.path / "p8");
+    CHECK(read_text(t.tmp.path / "p1" / "lineage.csv") != read_text(t.tmp.path / "t1" / "lineage.csv"));
+    write_text(t.config, tiny_pipeline_config(4, 8, 6));
+    REQUIRE(t.evolve(t.tmp.path / "lag6", "--threads 2").code == 0);
+    CHECK(read_text(t.tmp.path / "lag6" / "lineage.csv") != read_text(t.tmp.path / "p1" / "lineage.csv"));
 }
 
 TEST_CASE("resume after a stop equals an uninterrupted run", "[app][resume]") {

@@ -29,8 +29,9 @@ using namespace morphogen::test;
 namespace {
 
 // A run of 4 generations of 6 with every best exported: ~20 ms on a RAM disk.
+// The pipeline schedule, lag 3: a stop mostly lands with births in flight.
 std::string fault_config() {
-    auto config = nlohmann::json::parse(tiny_config(3, 6, 2));
+    auto config = nlohmann::json::parse(tiny_pipeline_config(3, 6, 3));
     config["growth"]["steps"] = 4;
     config["growth"]["max_vertices"] = 100;
     config["run"]["export_every"] = 1;

@@ -54,7 +54,7 @@ std::string elite_config(int generations) {
     return R"({"network": {"outputs": 4, "hidden": [5]},
  "growth": {"steps": 12, "max_vertices": 300},
  "fitness": {"type": "canopy", "height": 1, "cell": 0.1},
- "evolution": {"algorithm": "map_elites", "population": 12, "batch": 5, "mutation_rate": 0.2},
+ "evolution": {"algorithm": "map_elites", "population": 12, "lag": 5, "mutation_rate": 0.2},
  "descriptors": [{"measure": "height", "min": 0, "max": 3, "bins": 6},
                  {"measure": "footprint", "min": 0, "max": 10, "bins": 5}],
  "archive": {"type": "grid", "qd_offset": -1},
@@ -140,7 +140,13 @@ TEST_CASE("a GA run over 1, 2, 3 and 5 processes gives the plain run's files", "
     if (!have_mpi()) return;
     TempDir tmp("mpi-ga");
     const fs::path config = tmp.path / "c.json";
+    // The batch schedule of older runs, over 3 processes.
     write_text(config, tiny_config(6, 10, 4));
+    REQUIRE(run_morphogen("evolve " + q(config) + " --out " + q(tmp.path / "batch")).code == 0);
+    REQUIRE(run_shell(mpirun(3) + "evolve " + q(config) + " --out " + q(tmp.path / "batch3"), tmp.path / "log").code == 0);
+    check_same_dirs(tmp.path / "batch", tmp.path / "batch3");
+    // The pipeline.
+    write_text(config, tiny_pipeline_config(6, 10, 6));
     REQUIRE(run_morphogen("evolve " + q(config) + " --out " + q(tmp.path / "plain")).code == 0);
     for (int n : {1, 2, 3, 5}) {
         for (int threads : {1, 2}) {
@@ -194,12 +200,12 @@ TEST_CASE("stopped with one number of processes, resumed with another: the unint
     check_same_dirs(tmp.path / "plain", dir);
 }
 
-TEST_CASE("SIGTERM to mpirun: rank 0 checkpoints after the batch, every process exits 130, resume continues",
+TEST_CASE("SIGTERM to mpirun: rank 0 checkpoints with births in flight, every process exits 130, resume continues",
           "[cluster][mpi][signals]") {
     if (!have_mpi()) return;
     TempDir tmp("mpi-sigterm");
     const fs::path config = tmp.path / "c.json";
-    write_text(config, tiny_config(100000, 10, 4));
+    write_text(config, tiny_pipeline_config(100000, 10, 6));
     const fs::path dir = tmp.path / "run";
     const int pid = spawn(mpirun(3) + "evolve " + config.string() + " --out " + dir.string() + " --threads 1",
                           tmp.path / "log");
