@@ -136,7 +136,9 @@ bool RemoteEvaluator::receive_results() {
 std::optional<ScoredBirth> RemoteEvaluator::next(std::chrono::milliseconds timeout) {
     const double wall0 = wall_s(), cpu0 = cpu_s();
     const double deadline = wall0 + 1e-3 * static_cast<double>(timeout.count());
-    World::Backoff backoff;
+    // Up to 2 ms between polls: the workers hold queued genomes, so a result
+    // noticed late delays no worker, and rank 0 can share a core with one.
+    World::Backoff backoff(2000);
     while (ready_.empty()) {
         if (receive_results()) {
             backoff.reset();

@@ -47,15 +47,17 @@ public:
     void progress();
     void flush(const std::function<void()>& idle = {});
     // Sleeps a little, longer each time nothing happened (20 µs doubling to
-    // 250 µs; reset() after something did): how every waiting loop here
+    // `max_us`; reset() after something did): how every waiting loop here
     // waits, so a waiting process leaves its core to the threads that compute.
     class Backoff {
     public:
+        explicit Backoff(int max_us = 250) : max_us_(max_us) {}
         void pause();
         void reset() { us_ = 20; }
 
     private:
         int us_ = 20;
+        int max_us_;
     };
 
     // Ends every process of the job with `code` (MPI_Abort); for the rare

@@ -40,7 +40,7 @@ struct World::Posted {
 // 250 µs, little next to growing a genome (milliseconds).
 void World::Backoff::pause() {
     std::this_thread::sleep_for(std::chrono::microseconds(us_));
-    us_ = std::min(us_ * 2, 250);
+    us_ = std::min(us_ * 2, max_us_);
 }
 
 World::~World() {
