@@ -118,16 +118,18 @@ std::string encode_work(const std::vector<WorkItem>& items) {
     for (const WorkItem& item : items) {
         w.put(item.index);
         w.put_doubles(item.params);
+        w.put(item.keep_from);
     }
     return w.take();
 }
 
 std::vector<WorkItem> decode_work(const std::string& bytes) {
     Reader r(bytes);
-    std::vector<WorkItem> items(r.count(2 * sizeof(std::uint64_t)));
+    std::vector<WorkItem> items(r.count(3 * sizeof(std::uint64_t)));
     for (WorkItem& item : items) {
         item.index = r.get<std::uint64_t>();
         item.params = r.get_doubles();
+        item.keep_from = r.get<double>();
     }
     r.finish();
     return items;
@@ -144,13 +146,14 @@ std::string encode_results(const std::vector<ResultItem>& items) {
         w.put(e.size);
         w.put_doubles(e.descriptors);
         w.put_text(e.error);
+        w.put_text(e.kept);
     }
     return w.take();
 }
 
 std::vector<ResultItem> decode_results(const std::string& bytes) {
     Reader r(bytes);
-    std::vector<ResultItem> items(r.count(sizeof(std::uint64_t) * 5 + 1));
+    std::vector<ResultItem> items(r.count(sizeof(std::uint64_t) * 6 + 1));
     for (ResultItem& item : items) {
         item.index = r.get<std::uint64_t>();
         const auto valid = r.get<std::uint8_t>();
@@ -160,6 +163,7 @@ std::vector<ResultItem> decode_results(const std::string& bytes) {
         item.evaluation.size = r.get<double>();
         item.evaluation.descriptors = r.get_doubles();
         item.evaluation.error = r.get_text();
+        item.evaluation.kept = r.get_text();
     }
     r.finish();
     return items;

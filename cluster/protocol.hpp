@@ -8,6 +8,7 @@
 #include "evolution/individual.hpp"
 
 #include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,8 +31,10 @@ struct ProtocolError : std::runtime_error {
 };
 
 struct WorkItem {
-    std::uint64_t index = 0;  // its position in the batch
+    std::uint64_t index = 0;  // its birth
     std::vector<double> params;
+    // Keep what exporting it needs if it scores at least this (+infinity: never).
+    double keep_from = std::numeric_limits<double>::infinity();
 };
 
 struct ResultItem {

@@ -92,8 +92,8 @@ std::string RemoteEvaluator::summary() const {
     return text;
 }
 
-void RemoteEvaluator::submit(std::uint64_t birth, std::span<const double> params) {
-    queued_.push_back(Queued{birth, std::vector<double>(params.begin(), params.end())});
+void RemoteEvaluator::submit(std::uint64_t birth, std::span<const double> params, double keep_from) {
+    queued_.push_back(Queued{birth, std::vector<double>(params.begin(), params.end()), keep_from});
     dispatch();
 }
 
@@ -104,7 +104,7 @@ void RemoteEvaluator::dispatch() {
         if (room <= 0) continue;
         std::vector<WorkItem> items;
         for (int k = 0; k < room && !queued_.empty(); ++k) {
-            items.push_back(WorkItem{queued_.front().birth, std::move(queued_.front().params)});
+            items.push_back(WorkItem{queued_.front().birth, std::move(queued_.front().params), queued_.front().keep_from});
             queued_.pop_front();
         }
         outstanding_[r] += static_cast<int>(items.size());

@@ -32,7 +32,7 @@ public:
     // could not clean up) would leave the job hanging, so it is aborted.
     ~RemoteEvaluator() override;
 
-    void submit(std::uint64_t birth, std::span<const double> params) override;
+    void submit(std::uint64_t birth, std::span<const double> params, double keep_from) override;
     std::optional<ScoredBirth> next(std::chrono::milliseconds timeout) override;
     // Waits for the workers' results still due and drops them.
     void cancel() override;
@@ -47,6 +47,7 @@ private:
     struct Queued {
         std::uint64_t birth;
         std::vector<double> params;
+        double keep_from;
     };
     // Sends queued genomes to every worker with room (up to 2x its threads).
     void dispatch();

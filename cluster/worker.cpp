@@ -89,7 +89,7 @@ int serve(World& world) {
         }
         case tag_work:
             if (!serving.evaluator) throw ProtocolError("work before a config");
-            for (WorkItem& item : decode_work(m->bytes)) serving.evaluator->submit(item.index, item.params);
+            for (WorkItem& item : decode_work(m->bytes)) serving.evaluator->submit(item.index, item.params, item.keep_from);
             break;
         default:
             throw ProtocolError("unknown message tag " + std::to_string(m->tag));

@@ -11,10 +11,12 @@
 
 namespace morphogen {
 
-Evaluation evaluate_safely(const Problem& problem, std::span<const double> params, int worker) noexcept {
+Evaluation evaluate_safely(const Problem& problem, std::span<const double> params, int worker,
+                           double keep_from) noexcept {
     Evaluation result;
     try {
-        result = problem.evaluate(params, worker);
+        result = std::isinf(keep_from) && keep_from > 0 ? problem.evaluate(params, worker)
+                                                        : problem.evaluate_keeping(params, worker, keep_from);
         if (result.valid && !std::isfinite(result.score)) {
             result.valid = false;
             result.error = "non-finite score " + std::to_string(result.score);
@@ -41,6 +43,7 @@ Evaluation evaluate_safely(const Problem& problem, std::span<const double> param
     if (!result.valid) {
         result.size = 0.0;
         result.descriptors.clear();
+        result.kept.clear();
     }
     return result;
 }

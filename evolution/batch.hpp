@@ -9,6 +9,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -19,8 +20,9 @@ namespace morphogen {
 // Scores one genome and never throws. An exception, a non-finite score or a
 // non-finite descriptor makes the result invalid, with the reason in `error`
 // ("invalid" if the problem gave none); an invalid result has size 0 and no
-// descriptors.
-Evaluation evaluate_safely(const Problem& problem, std::span<const double> params, int worker) noexcept;
+// descriptors. `keep_from`: Problem::evaluate_keeping (+infinity: keep nothing).
+Evaluation evaluate_safely(const Problem& problem, std::span<const double> params, int worker,
+                           double keep_from = std::numeric_limits<double>::infinity()) noexcept;
 
 struct BredBatch {
     std::vector<Individual> children;  // in birth order; fitness, size and descriptors filled in

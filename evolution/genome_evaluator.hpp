@@ -23,7 +23,9 @@ class GenomeEvaluator {
 public:
     virtual ~GenomeEvaluator() = default;
     // Queues a genome (copied) under its birth index; never blocks for long.
-    virtual void submit(std::uint64_t birth, std::span<const double> params) = 0;
+    // Its evaluation keeps what exporting it needs if it scores at least
+    // `keep_from` (Problem::evaluate_keeping; +infinity: never).
+    virtual void submit(std::uint64_t birth, std::span<const double> params, double keep_from) = 0;
     // One finished evaluation, exactly what evaluate_safely gives for that
     // genome, or nothing if none finished within `timeout`. May throw only
     // for failures of its own (a lost worker), never for a genome.

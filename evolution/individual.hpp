@@ -27,6 +27,9 @@ struct Evaluation {
     // Problem-defined behaviour descriptors that place a genome in a
     // MAP-Elites archive; empty for problems that have none (the GA ignores them).
     std::vector<double> descriptors = {};
+    // Problem-defined bytes kept from the evaluation for export (the grown
+    // mesh's files), only when asked for (Problem::evaluate_keeping).
+    std::string kept = {};
 };
 
 struct Individual {

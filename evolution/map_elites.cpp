@@ -3,7 +3,9 @@
 #include "evolution/batch.hpp"
 #include "evolution/operators.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace morphogen {
@@ -63,6 +65,12 @@ Inserted MapElites::insert(Individual& child, std::string& error) {
         state_.new_cells_in_generation = 0;
     }
     return what;
+}
+
+double MapElites::export_floor() const {
+    double floor = -std::numeric_limits<double>::infinity();
+    for (const auto& [cell, elite] : state_.archive.elites()) floor = std::max(floor, elite.fitness);
+    return floor;
 }
 
 EliteBatchOutcome MapElites::step(int threads) {

@@ -43,7 +43,7 @@ void BirthPipeline::conceive_due(std::uint64_t target) {
 void BirthPipeline::submit_below(std::uint64_t target) {
     const std::uint64_t births = breeder_.births();
     for (; submitted_ < slots_.size() && births + submitted_ < target; ++submitted_)
-        evaluator_.submit(births + submitted_, slots_[submitted_].child.params);
+        evaluator_.submit(births + submitted_, slots_[submitted_].child.params, breeder_.export_floor());
 }
 
 bool BirthPipeline::run(std::uint64_t target, const OnInsert& on_insert, const std::function<bool()>& stop) {
@@ -66,9 +66,10 @@ bool BirthPipeline::run(std::uint64_t target, const OnInsert& on_insert, const s
         slots_.pop_front();
         --submitted_;
         std::string error;
+        const std::string kept = std::move(slot.evaluation->kept);
         take_evaluation(slot.child, error, std::move(*slot.evaluation));
         const Inserted what = breeder_.insert(slot.child, error);
-        on_insert(slot.child, error, what);
+        on_insert(slot.child, error, what, kept);
     }
     return true;
 }

@@ -35,6 +35,10 @@ public:
     virtual Individual conceive(std::uint64_t birth) const = 0;
     // Inserts the next birth, evaluated; may make it invalid (with `error`).
     virtual Inserted insert(Individual& child, std::string& error) = 0;
+    // A child scoring below this can never become the individual the run
+    // exports (the best population member or elite, which only ever gets
+    // better); -infinity while there is none.
+    virtual double export_floor() const = 0;
 };
 
 // Moves an evaluation's results into its child (one place, so no path can
@@ -53,7 +57,10 @@ public:
     BirthPipeline(const BirthPipeline&) = delete;
     BirthPipeline& operator=(const BirthPipeline&) = delete;
 
-    using OnInsert = std::function<void(const Individual& child, const std::string& error, const Inserted& what)>;
+    // `kept`: what the evaluation kept for exporting the child (Evaluation::kept;
+    // asked for when it could beat export_floor()), else empty.
+    using OnInsert = std::function<void(const Individual& child, const std::string& error, const Inserted& what,
+                                        const std::string& kept)>;
     // Inserts births in order, calling `on_insert` after each, until `target`
     // births are done (true) or `stop()` says so (false; asked between
     // insertions and at least every 100 ms while waiting). Only births below

@@ -22,6 +22,13 @@ public:
     virtual void prepare(int workers) { (void)workers; }
     // Must be safe to call concurrently with distinct `worker` in [0, workers).
     virtual Evaluation evaluate(std::span<const double> params, int worker) const = 0;
+    // evaluate(), also filling Evaluation::kept with what exporting this
+    // genome needs (so it is not grown again) when it is valid with a score
+    // of at least `keep_from`. The default keeps nothing.
+    virtual Evaluation evaluate_keeping(std::span<const double> params, int worker, double keep_from) const {
+        (void)keep_from;
+        return evaluate(params, worker);
+    }
 };
 
 }  // namespace morphogen

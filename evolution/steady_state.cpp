@@ -3,7 +3,9 @@
 #include "evolution/batch.hpp"
 #include "evolution/operators.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -39,6 +41,13 @@ Inserted SteadyStateGA::insert(Individual& child, std::string&) {
         state_.invalid_in_generation = 0;
     }
     return what;
+}
+
+double SteadyStateGA::export_floor() const {
+    double floor = -std::numeric_limits<double>::infinity();
+    for (const Individual& member : state_.population)
+        if (member.valid()) floor = std::max(floor, member.fitness);
+    return floor;
 }
 
 BatchOutcome SteadyStateGA::step(int threads) {

@@ -57,6 +57,7 @@ public:
     std::uint64_t births() const override { return state_.births; }
     Individual conceive(std::uint64_t birth) const override;
     Inserted insert(Individual& child, std::string& error) override;
+    double export_floor() const override;
 
     const GaState& state() const { return state_; }
     const GaParams& params() const { return params_; }

@@ -40,10 +40,10 @@ std::string ThreadEvaluator::description() const {
     return std::to_string(threads_.size()) + (threads_.size() == 1 ? " thread" : " threads");
 }
 
-void ThreadEvaluator::submit(std::uint64_t birth, std::span<const double> params) {
+void ThreadEvaluator::submit(std::uint64_t birth, std::span<const double> params, double keep_from) {
     {
         const std::lock_guard lock(mutex_);
-        jobs_.push_back(Job{birth, epoch_, std::vector<double>(params.begin(), params.end())});
+        jobs_.push_back(Job{birth, epoch_, std::vector<double>(params.begin(), params.end()), keep_from});
         ++outstanding_;
     }
     work_ready_.notify_one();
@@ -89,7 +89,7 @@ void ThreadEvaluator::serve(int worker) {
         jobs_.pop_front();
         ++busy_;
         lock.unlock();
-        Evaluation evaluation = evaluate_safely(problem_, job.params, worker);
+        Evaluation evaluation = evaluate_safely(problem_, job.params, worker, job.keep_from);
         lock.lock();
         --busy_;
         if (job.epoch == epoch_) results_.push_back(ScoredBirth{job.birth, std::move(evaluation)});

@@ -24,7 +24,7 @@ public:
     ThreadEvaluator(const ThreadEvaluator&) = delete;
     ThreadEvaluator& operator=(const ThreadEvaluator&) = delete;
 
-    void submit(std::uint64_t birth, std::span<const double> params) override;
+    void submit(std::uint64_t birth, std::span<const double> params, double keep_from) override;
     std::optional<ScoredBirth> next(std::chrono::milliseconds timeout) override;
     void cancel() override;
     int capacity() const override { return static_cast<int>(threads_.size()); }
@@ -40,6 +40,7 @@ private:
         std::uint64_t birth;
         std::uint64_t epoch;  // cancel() bumps the epoch: older jobs' results are dropped
         std::vector<double> params;
+        double keep_from;
     };
     void serve(int worker);
 

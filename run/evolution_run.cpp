@@ -4,6 +4,7 @@
 #include "core/errors.hpp"
 #include "run/exit_codes.hpp"
 #include "run/growth_problem.hpp"
+#include "run/io_thread.hpp"
 #include "run/progress.hpp"
 #include "run/search_drivers.hpp"
 #include "run/stop_signals.hpp"
@@ -98,6 +99,11 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
     std::uint64_t generation_first_birth = ga.births();
     BirthPipeline pipeline(schedule, ga.breeder(), *evaluator, std::move(s.state.pending));
     std::string rows;  // lineage.csv rows not yet written
+    // The exported individual's files as its evaluation kept them (none after a resume, until it changes).
+    std::optional<std::uint64_t> kept_id;
+    std::string kept_files;
+    // Declared last, so it finishes its writes before anything it uses goes.
+    IoThread io;
 
     // spdlog reports a failed log write to the handler, not to us: check it.
     auto check_log = [&] {
@@ -108,10 +114,10 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
         rows.clear();
         check_log();
     };
+    // The state is taken here; the I/O thread syncs the rows written so far
+    // and writes archive.csv, then the checkpoint (each atomically, in order).
     auto checkpoint = [&] {
         write_rows();
-        s.history.sync();
-        s.lineage.sync();
         s.state.config = config.resolved;
         s.state.seed = config.run.seed;
         ga.save(s.state);
@@ -119,13 +125,25 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
         s.state.lineage_bytes = s.lineage.size();
         s.state.lineage_hash = s.lineage.hash_hex();
         s.state.elapsed_s = elapsed_before + seconds_since(session_start);
-        // archive.csv first: a checkpoint never refers to an older archive.csv.
-        if (config.algorithm == Algorithm::map_elites) write_file_atomically(s.paths.archive, ga.archive_text());
-        save_checkpoint(s.paths.checkpoint, s.state);
+        std::string archive = config.algorithm == Algorithm::map_elites ? ga.archive_text() : std::string();
+        io.post([&s, bytes = checkpoint_bytes(s.state), archive = std::move(archive)] {
+            s.history.sync();
+            s.lineage.sync();
+            // archive.csv first: a checkpoint never refers to an older archive.csv.
+            if (!archive.empty()) write_file_atomically(s.paths.archive, archive);
+            write_file_atomically(s.paths.checkpoint, bytes);
+        });
     };
     auto best_fitness = [&] { return ga.best() ? std::optional<double>(ga.best()->fitness) : std::nullopt; };
 
-    const auto on_insert = [&](const Individual& child, const std::string& error, const Inserted& what) {
+    const auto on_insert = [&](const Individual& child, const std::string& error, const Inserted& what,
+                               const std::string& kept) {
+        if (!kept.empty()) {
+            if (const Individual* exported = ga.exported(); exported != nullptr && exported->id == child.id) {
+                kept_id = child.id;
+                kept_files = kept;
+            }
+        }
         rows += format_lineage_row(child, s.lineage_descriptor_columns.value_or(config.qd.descriptors.size()));
         if (!error.empty()) {
             progress.clear();
@@ -154,8 +172,15 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
         const bool last = births == target_births;
         const auto every = [&](std::uint64_t n) { return n > 0 && (generation % n == 0 || last); };
         if (config.run.export_every > 0 && every(config.run.export_every)) {
-            if (const Individual* best = ga.exported())
-                problem.export_genome(best->params, s.paths.best_stem(generation));
+            if (const Individual* best = ga.exported()) {
+                const std::filesystem::path stem = s.paths.best_stem(generation);
+                if (kept_id == best->id)
+                    io.post([&problem, files = kept_files, params = best->params, stem] {
+                        problem.export_kept(files, params, stem);
+                    });
+                else  // grown again, on the I/O thread
+                    io.post([&problem, params = best->params, stem] { problem.export_genome(params, stem); });
+            }
         }
         if (last || every(config.run.checkpoint_every)) checkpoint();
         generation_start = Clock::now();
@@ -165,11 +190,13 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
     progress.update(ga.births(), ga.completed_generations(), best_fitness());
     if (!pipeline.run(target_births, on_insert, [] { return StopSignals::requested(); })) {
         checkpoint();
+        io.drain();
         progress.clear();
         log->warn("stopped by signal {} after {} births; checkpoint saved. Continue with: morphogen resume {}",
                   StopSignals::signal_number(), ga.births(), s.paths.dir.string());
         return exit_code::interrupted;
     }
+    io.drain();
     progress.clear();
     if (remote && !evaluator->summary().empty()) s.log.file_only->info("{}", evaluator->summary());
     if (ga.best())

@@ -6,6 +6,10 @@
 #include "core/network.hpp"
 
 #include <cmath>
+#include <cstring>
+#include <iterator>
+#include <limits>
+#include <string_view>
 #include <stdexcept>
 #include <string>
 #include <utility>
@@ -30,6 +34,47 @@ void GrowthProblem::prepare(int workers) {
 }
 
 Evaluation GrowthProblem::evaluate(std::span<const double> params, int worker) const {
+    return evaluate_mesh(params, worker, std::numeric_limits<double>::infinity());
+}
+
+Evaluation GrowthProblem::evaluate_keeping(std::span<const double> params, int worker, double keep_from) const {
+    return evaluate_mesh(params, worker, keep_from);
+}
+
+namespace {
+constexpr std::pair<const char*, MeshFormat> export_formats[] = {{".glb", MeshFormat::glb}, {".obj", MeshFormat::obj}};
+
+// The export files of a mesh in one string: each file's byte count (8 bytes,
+// native order) then its bytes, in export_formats order.
+std::string pack_exports(MeshView mesh) {
+    std::string out;
+    for (const auto& [extension, format] : export_formats) {
+        const std::string bytes = encode_mesh(mesh, format, {}, std::string("kept mesh") + extension);
+        const std::uint64_t n = bytes.size();
+        out.append(reinterpret_cast<const char*>(&n), sizeof n);
+        out += bytes;
+    }
+    return out;
+}
+
+std::vector<std::string_view> unpack_exports(const std::string& kept) {
+    std::vector<std::string_view> files;
+    std::size_t at = 0;
+    for (std::size_t i = 0; i < std::size(export_formats); ++i) {
+        std::uint64_t n = 0;
+        if (kept.size() - at < sizeof n) throw std::invalid_argument("kept export files are truncated");
+        std::memcpy(&n, kept.data() + at, sizeof n);
+        at += sizeof n;
+        if (kept.size() - at < n) throw std::invalid_argument("kept export files are truncated");
+        files.emplace_back(kept.data() + at, n);
+        at += n;
+    }
+    if (at != kept.size()) throw std::invalid_argument("kept export files have trailing bytes");
+    return files;
+}
+}  // namespace
+
+Evaluation GrowthProblem::evaluate_mesh(std::span<const double> params, int worker, double keep_from) const {
     const Network network(Genome{layers_, std::vector<double>(params.begin(), params.end())});
     const Grower grower(network, growth_);
     const GrowthState state = grower.grow(seed_, workspaces_.at(static_cast<std::size_t>(worker)));
@@ -54,6 +99,7 @@ Evaluation GrowthProblem::evaluate(std::span<const double> params, int worker) c
                     break;
                 }
     }
+    if (evaluation.valid && evaluation.score >= keep_from) evaluation.kept = pack_exports(state.mesh.view());
     return evaluation;
 }
 
@@ -66,10 +112,14 @@ GrowthState GrowthProblem::grow(std::span<const double> params) const {
 
 void GrowthProblem::export_genome(std::span<const double> params, const std::filesystem::path& stem) const {
     const GrowthState state = grow(params);
-    for (const auto& [extension, format] : {std::pair{".glb", MeshFormat::glb}, std::pair{".obj", MeshFormat::obj}}) {
-        const std::string path = stem.string() + extension;
-        write_file_atomically(path, encode_mesh(state.mesh.view(), format, {}, path));
-    }
+    export_kept(pack_exports(state.mesh.view()), params, stem);
+}
+
+void GrowthProblem::export_kept(const std::string& kept, std::span<const double> params,
+                                const std::filesystem::path& stem) const {
+    const std::vector<std::string_view> files = unpack_exports(kept);
+    for (std::size_t i = 0; i < files.size(); ++i)
+        write_file_atomically(stem.string() + export_formats[i].first, files[i]);
     save_genome(Genome{layers_, std::vector<double>(params.begin(), params.end())}, stem.string() + ".genome.json");
 }
 

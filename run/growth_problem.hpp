@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace morphogen {
@@ -30,14 +31,22 @@ public:
     // invalid, with the reason; a GA run only records the measures, so there
     // a measure that throws or is non-finite leaves descriptors empty.
     Evaluation evaluate(std::span<const double> params, int worker) const override;
+    // Also keeps, when valid with a score >= keep_from, the grown mesh's
+    // export files (.glb and .obj bytes), so exporting it grows nothing.
+    Evaluation evaluate_keeping(std::span<const double> params, int worker, double keep_from) const override;
 
     // Grows one genome (single-threaded use, e.g. exporting the best).
     GrowthState grow(std::span<const double> params) const;
     // Writes <stem>.glb, <stem>.obj and <stem>.genome.json for a genome, each
     // atomically (atomic_file.hpp). Throws IoError naming the file and the reason.
     void export_genome(std::span<const double> params, const std::filesystem::path& stem) const;
+    // The same files from what evaluate_keeping kept for this genome: the
+    // same bytes as export_genome, without growing it again.
+    void export_kept(const std::string& kept, std::span<const double> params, const std::filesystem::path& stem) const;
 
 private:
+    Evaluation evaluate_mesh(std::span<const double> params, int worker, double keep_from) const;
+
     std::vector<int> layers_;
     std::size_t dimension_;
     GrowthParams growth_;

@@ -1,13 +1,17 @@
 // history.csv / lineage.csv rows and the append-only files behind them.
 #include "core/errors.hpp"
 #include "run/append_file.hpp"
+#include "run/growth_problem.hpp"
 #include "run/run_records.hpp"
+#include "tests/support/temp_dir.hpp"
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cmath>
 #include <cstdlib>
+#include <limits>
+#include <random>
 
 using namespace morphogen;
 using namespace morphogen::test;
@@ -77,4 +81,36 @@ TEST_CASE("an append file resumes at a recorded length and refuses a changed pre
     CHECK(read_text(path) == "a,b\n1,3\n7,8\n");  // untouched
     write_text(path, "a,b\n");
     CHECK_THROWS_WITH(AppendFile::resume(path, length, hash), Catch::Contains("bytes"));
+}
+
+TEST_CASE("a mesh kept from its evaluation exports the bytes of one grown again", "[app][records][export]") {
+    TempDir tmp("kept-export");
+    const ExperimentConfig config = read_experiment_config(nlohmann::json::parse(tiny_config(2)), "tiny");
+    GrowthProblem problem(config);
+    problem.prepare(1);
+    std::mt19937_64 random(5);
+    std::normal_distribution<double> normal(0.0, 1.0);
+    int compared = 0;
+    for (int trial = 0; trial < 20; ++trial) {
+        std::vector<double> genome(problem.dimension());
+        for (double& p : genome) p = normal(random);
+        const Evaluation plain = problem.evaluate(genome, 0);
+        CHECK(plain.kept.empty());
+        const Evaluation kept = problem.evaluate_keeping(genome, 0, -std::numeric_limits<double>::infinity());
+        CHECK(kept.score == plain.score);
+        if (!kept.valid) continue;
+        REQUIRE_FALSE(kept.kept.empty());
+        // A threshold above the score keeps nothing.
+        CHECK(problem.evaluate_keeping(genome, 0, kept.score + 1).kept.empty());
+        const fs::path a = tmp.path / ("kept" + std::to_string(trial)), b = tmp.path / ("grown" + std::to_string(trial));
+        problem.export_kept(kept.kept, genome, a);
+        problem.export_genome(genome, b);
+        for (const char* extension : {".glb", ".obj", ".genome.json"}) {
+            CAPTURE(extension);
+            CHECK(read_text(a.string() + extension) == read_text(b.string() + extension));
+        }
+        ++compared;
+    }
+    CHECK(compared > 5);
+    CHECK_THROWS_AS(problem.export_kept("short", {}, tmp.path / "x"), std::invalid_argument);
 }

@@ -26,7 +26,7 @@ namespace {
 class ShuffledEvaluator : public GenomeEvaluator {
 public:
     ShuffledEvaluator(const Problem& problem, unsigned seed) : problem_(problem), random_(seed) {}
-    void submit(std::uint64_t birth, std::span<const double> params) override {
+    void submit(std::uint64_t birth, std::span<const double> params, double) override {
         held_.emplace(birth, std::vector<double>(params.begin(), params.end()));
         most_held = std::max(most_held, held_.size());
     }
@@ -71,7 +71,7 @@ MapElitesState me_state() {
 }
 
 const auto never = [] { return false; };
-const auto ignore = [](const Individual&, const std::string&, const Inserted&) {};
+const auto ignore = [](const Individual&, const std::string&, const Inserted&, const std::string&) {};
 
 // A GA run of `births` births through the pipeline, as its state's JSON.
 std::string ga_run(Problem& problem, const GaParams& params, GenomeEvaluator& evaluator, std::uint64_t births) {
@@ -203,7 +203,7 @@ TEST_CASE("the pipeline refuses an evaluator that returns a birth it was not giv
     SphereProblem problem(12, 3);
     class Liar : public GenomeEvaluator {
     public:
-        void submit(std::uint64_t, std::span<const double>) override {}
+        void submit(std::uint64_t, std::span<const double>, double) override {}
         std::optional<ScoredBirth> next(std::chrono::milliseconds) override { return ScoredBirth{1000, {}}; }
         void cancel() override {}
         int capacity() const override { return 1; }
