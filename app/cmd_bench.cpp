@@ -177,7 +177,7 @@ void add_bench_command(CLI::App& root, CommandRunner& selected) {
     auto options = std::make_shared<BenchOptions>();
     CLI::App* cmd = root.add_subcommand("bench", "Measure growth speed (1 thread and all threads)");
     add_config_option(cmd, options->config);
-    cmd->add_option("--genomes", options->genomes, "Number of random genomes to grow (default 32: one evolution batch)")
+    cmd->add_option("--genomes", options->genomes, "Number of random genomes to grow (default 32)")
         ->check(CLI::Range(1, 100000));
     cmd->add_option("--repeat", options->repeat, "Passes to take medians over (default 5)")->check(CLI::Range(1, 1000));
     cmd->add_option("--seed", options->seed, "Seed of the first genome");

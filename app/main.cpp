@@ -43,7 +43,7 @@ int run_selected(const CommandRunner& selected) {
     }
 }
 
-// Rank 0 of a job of several processes: runs the command with its batches
+// Rank 0 of a job of several processes: runs the command with its genomes
 // scored by the workers, then tells every worker to exit with its code.
 int run_rank0(cluster::World& world, const CommandRunner& selected) {
     set_remote_evaluator_factory([&world](const ExperimentConfig& config, const std::filesystem::path& dir) {

@@ -253,28 +253,44 @@ double ResourceEstimate::eval_seconds() const {
     return std::accumulate(work.begin(), work.end(), 0.0, [](double s, const EstimatePart& p) { return s + p.amount; });
 }
 
+namespace {
+// The most births in flight at once (docs/algorithm.md §8.4): a batch, or
+// the pipeline's lag (all of generation 0 at the start).
+double births_in_flight(const GaParams& p) {
+    if (p.schedule == ScheduleKind::batch) return std::min(p.batch, p.population);
+    return std::max(p.lag, p.population);
+}
+std::string in_flight_key(const GaParams& p) {
+    return p.schedule == ScheduleKind::batch ? "evolution.batch" : "evolution.lag";
+}
+}  // namespace
+
 Workload evolution_workload(const ExperimentConfig& config) {
     Workload w;
     w.evolution = true;
-    // Threads beyond the batch get no child and never grow a workspace.
-    w.threads = std::min(resolve_threads(config.run.threads),
-                         std::min(config.evolution.batch, config.evolution.population));
+    // Threads beyond the births in flight get no child and never grow a workspace.
+    w.threads = std::min<int>(resolve_threads(config.run.threads),
+                              static_cast<int>(births_in_flight(config.evolution)));
     w.writers = config.run.export_every > 0 ? 1 : 0;
     return w;
 }
 
 SearchGenomes search_genomes(const ExperimentConfig& config) {
     const double P = config.evolution.population;
-    const double batch = std::min<double>(config.evolution.batch, P);
+    const double flight = births_in_flight(config.evolution);
+    // A checkpoint keeps the pipeline's births conceived from earlier states (lag - 1).
+    const double pending = config.evolution.schedule == ScheduleKind::pipeline ? config.evolution.lag - 1 : 0.0;
     if (config.algorithm == Algorithm::map_elites) {
         // Every cell full (generation 0's P births enter the archive too), its
-        // copy in the run state saved at each checkpoint, a batch, the best.
+        // copy in the run state saved at each checkpoint, the births in flight
+        // and their copy in that state, the best.
         const double cells = static_cast<double>(config.qd.cells());
-        return {2 * cells + batch + 3, cells + 1};
+        return {2 * cells + flight + pending + 3, cells + pending + 1};
     }
     // The population, its copy in the run state saved at each checkpoint, the
-    // children of a batch, and the best so far (in both states and one export).
-    return {2 * P + batch + 3, P + 1};
+    // births in flight and their copy there, and the best so far (in both
+    // states and one export).
+    return {2 * P + flight + pending + 3, P + pending + 1};
 }
 
 ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedExtent& seed, const Workload& w) {
@@ -360,11 +376,13 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
         const std::string cells_key = config.qd.archive == ArchiveKind::cvt ? "archive.cells" : "descriptors";
         e.genomes = search_genomes(config);
         e.memory.push_back({group(e.genomes.held) +
-                                (elites ? " genomes (a full archive of " + group(genomes) + " cells twice, batch, best) x "
-                                        : std::string(" genomes (population, batch, best) x ")) +
+                                (elites ? " genomes (a full archive of " + group(genomes) +
+                                              " cells twice, births in flight, best) x "
+                                        : std::string(" genomes (population, births in flight, best) x ")) +
                                 group(D) + " parameters",
-                            genome_keys(elites ? std::vector<std::string>{cells_key, "evolution.batch"}
-                                               : std::vector<std::string>{"evolution.population", "evolution.batch"}),
+                            genome_keys(elites ? std::vector<std::string>{cells_key, in_flight_key(config.evolution)}
+                                               : std::vector<std::string>{"evolution.population",
+                                                                          in_flight_key(config.evolution)}),
                             e.genomes.held * (8 * D + genome_overhead)});
         const double kept = e.genomes.checkpointed;
         const double rows = static_cast<double>(config.run.generations) + 1;

@@ -75,7 +75,7 @@ struct Workload {
 };
 
 // What evolve and resume do with a config on this machine (run.threads
-// resolved; threads beyond the batch size evaluate nothing).
+// resolved; threads beyond the births in flight evaluate nothing).
 Workload evolution_workload(const ExperimentConfig& config);
 
 // One contribution to an estimate, with the keys that decide it.
@@ -95,7 +95,7 @@ struct HardCap {
 // The genomes of the search, the one place an archive of elites would add
 // its cells (both in memory and in the checkpoint).
 struct SearchGenomes {
-    double held = 0;          // in memory at once: population, its copy in the saved state, a batch, the best
+    double held = 0;          // in memory at once: population, its copy in the saved state, the births in flight, the best
     double checkpointed = 0;  // in each checkpoint: population and best
 };
 SearchGenomes search_genomes(const ExperimentConfig& config);

@@ -1,6 +1,6 @@
 #pragma once
-// Ctrl-C / SIGTERM as a request to stop cleanly: the run finishes its current
-// batch, checkpoints and exits 130. The first signal only sets a flag; the
+// Ctrl-C / SIGTERM as a request to stop cleanly: the run checkpoints at its
+// next birth (the births in flight kept) and exits 130. The first signal only sets a flag; the
 // handler then restores the default action, so a second Ctrl-C kills at once
 // (the last checkpoint stays valid either way). `evolve` and `resume` make one
 // first thing, before they read or create anything, so a signal during

@@ -93,8 +93,13 @@ TEST_CASE("the estimate counts the genome's parameters as the network does", "[l
     CHECK(e.parameters == 65 + 36 + 28);
     CHECK(e.parameters == random_genome(config.network.layers(), 1.0, 3).params.size());
     CHECK(e.genomes.held == search_genomes(config).held);
-    CHECK(e.genomes.held == 2 * 100 + 32 + 3);
-    CHECK(e.genomes.checkpointed == 100 + 1);
+    // Pipeline, lag 64: the population twice, max(lag, P) in flight, lag - 1 kept births twice, the best.
+    CHECK(e.genomes.held == 2 * 100 + 100 + 63 + 3);
+    CHECK(e.genomes.checkpointed == 100 + 63 + 1);
+    // The batch schedule: a batch in flight, none kept.
+    const ExperimentConfig batch = config_of(R"({"network": {"outputs": 4, "hidden": [5, 6]}, "evolution": {"batch": 32}})");
+    CHECK(search_genomes(batch).held == 2 * 100 + 32 + 3);
+    CHECK(search_genomes(batch).checkpointed == 100 + 1);
 }
 
 TEST_CASE("vertex and reach bounds hold for real growths, and are reached by the fastest", "[limits]") {
