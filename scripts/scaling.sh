@@ -67,7 +67,11 @@ run() {  # PROCESSES THREADS (processes 0: a plain run)
   [ "$check" = "$reference" ] && check="same" || check="DIFFERS ($check)"
   echo "| $(label "$1" "$2") | $rate | $(calc "$rate/$one") | $(calc "$rate/$one/$limit") | $check |"
 }
-label() { [ "$1" = 0 ] && echo "$2 threads" || echo "$1 processes x $2 threads"; }
+label() {
+  local threads="$2 threads"
+  [ "$2" = 1 ] && threads="1 thread"
+  [ "$1" = 0 ] && echo "$threads" || echo "$1 processes x $threads"
+}
 
 run 0 1
 run 0 "$n"
