@@ -451,3 +451,38 @@ TEST_CASE("run.threads far beyond the machine and the batch is capped, with a wa
     REQUIRE(one.code == 0);
     check_same_results(tmp.path / "many", tmp.path / "one");
 }
+
+TEST_CASE("the schedule: the pipeline by default, batch where a config sets batch, resolved to the same bytes",
+          "[app][config][pipeline]") {
+    // A new config: the pipeline, lag 64; no batch key in the resolved config.
+    const ExperimentConfig fresh = read_experiment_config(json::object(), "x");
+    CHECK(fresh.evolution.schedule == ScheduleKind::pipeline);
+    CHECK(fresh.evolution.lag == 64);
+    CHECK(fresh.resolved["evolution"]["schedule"] == "pipeline");
+    CHECK(fresh.resolved["evolution"]["lag"] == 64);
+    CHECK_FALSE(fresh.resolved["evolution"].contains("batch"));
+    // A config written for batches (every run made before the pipeline): batch,
+    // resolved exactly as before (no schedule, no lag key), and stable when read again.
+    const ExperimentConfig old = read_experiment_config(json{{"evolution", {{"batch", 8}}}}, "x");
+    CHECK(old.evolution.schedule == ScheduleKind::batch);
+    CHECK(old.evolution.batch == 8);
+    CHECK_FALSE(old.resolved["evolution"].contains("schedule"));
+    CHECK_FALSE(old.resolved["evolution"].contains("lag"));
+    CHECK(read_experiment_config(old.resolved, "again").resolved == old.resolved);
+    CHECK(read_experiment_config(fresh.resolved, "again").resolved == fresh.resolved);
+    // Named explicitly.
+    const ExperimentConfig named = read_experiment_config(json{{"evolution", {{"schedule", "batch"}}}}, "x");
+    CHECK(named.evolution.schedule == ScheduleKind::batch);
+    CHECK(named.resolved["evolution"]["schedule"] == "batch");
+    CHECK(named.resolved["evolution"]["batch"] == 32);
+    CHECK(read_experiment_config(named.resolved, "again").resolved == named.resolved);
+    const ExperimentConfig lag = read_experiment_config(json{{"evolution", {{"lag", 5}}}}, "x");
+    CHECK(birth_schedule(lag.evolution).describe() == "pipeline, lag 5");
+    // Keys that do not apply, and out of range.
+    CHECK_THAT(config_errors(json{{"evolution", {{"batch", 8}, {"lag", 4}}}}),
+               Catch::Contains("evolution.lag") && Catch::Contains("pipeline\" only"));
+    CHECK_THAT(config_errors(json{{"evolution", {{"schedule", "pipeline"}, {"batch", 8}}}}),
+               Catch::Contains("evolution.batch") && Catch::Contains("batch\" only"));
+    CHECK_THAT(config_errors(json{{"evolution", {{"lag", 0}}}}), Catch::Contains("evolution.lag"));
+    CHECK_THAT(config_errors(json{{"evolution", {{"schedule", "waves"}}}}), Catch::Contains("evolution.schedule"));
+}
