@@ -21,19 +21,19 @@ MapElites::MapElites(const MapElitesParams& params, std::uint64_t seed, Problem&
     check_params(params_);
     check_shared_params(rules(), params_.batch, "MAP-Elites");
     blocks_ = check_blocks(problem_.blocks(), problem_.dimension());
+    emitters_ = params_.emitters.empty() ? std::vector<EmitterSpec>{EmitterSpec{}} : params_.emitters;
+    per_generation_ = births_per_generation(emitters_, population());
+    for (const EmitterSpec& e : emitters_) weighs_fitness_ = weighs_fitness_ || e.selection == ParentSelection::fitness_proportional;
 }
 
-Individual MapElites::conceive_from(const std::vector<const Individual*>& snapshot, std::uint64_t birth) const {
-    ParentPicker pick;
-    if (!snapshot.empty()) {
-        pick = [&snapshot](RandomStream& stream) -> const Individual& { return *snapshot[stream.below(snapshot.size())]; };
-    }
-    return conceive_birth(rules(), blocks_, problem_.dimension(), seed_, birth, pick);
+Individual MapElites::conceive_from(const ParentPool& pool, std::uint64_t birth) const {
+    const std::size_t k = birth < population() ? 0 : emitter_of(birth, per_generation_, population());
+    return emit(emitters_[k], rules(), blocks_, problem_.dimension(), seed_, birth, pool);
 }
 
 Individual MapElites::conceive(std::uint64_t birth) const {
-    if (!snapshot_) snapshot_ = state_.archive.snapshot();
-    return conceive_from(*snapshot_, birth);
+    if (!pool_) pool_.emplace(state_.archive.snapshot());
+    return conceive_from(*pool_, birth);
 }
 
 Inserted MapElites::insert(Individual& child, std::string& error) {
@@ -51,10 +51,10 @@ Inserted MapElites::insert(Individual& child, std::string& error) {
     if (!child.valid()) ++state_.invalid_in_generation;
     keep_best(state_.best, child);
     last_placement_ = state_.archive.insert(child);
-    if (last_placement_ == Archive::Placement::filled) {
-        ++state_.new_cells_in_generation;
-        snapshot_.reset();
-    }
+    if (last_placement_ == Archive::Placement::filled) ++state_.new_cells_in_generation;
+    if (last_placement_ == Archive::Placement::filled ||
+        (weighs_fitness_ && last_placement_ == Archive::Placement::replaced))
+        pool_.reset();
     ++state_.births;
     Inserted what;
     if (at_generation_end()) {
@@ -76,9 +76,9 @@ double MapElites::export_floor() const {
 EliteBatchOutcome MapElites::step(int threads) {
     const std::size_t count = batch_size(state_.births, population(), params_.batch);
     // The parents of the whole batch: the elites before it, in cell-index order.
-    const std::vector<const Individual*> snapshot = state_.archive.snapshot();
+    const ParentPool pool(state_.archive.snapshot());
     BredBatch bred = breed_batch(problem_, state_.births, count, threads,
-                                 [&](std::uint64_t birth) { return conceive_from(snapshot, birth); });
+                                 [&](std::uint64_t birth) { return conceive_from(pool, birth); });
     EliteBatchOutcome out;
     out.children = std::move(bred.children);
     out.errors = std::move(bred.errors);

@@ -12,6 +12,7 @@
 // child was invalid) is a random genome, as in generation 0.
 #include "evolution/archive.hpp"
 #include "evolution/batch.hpp"
+#include "evolution/emitters.hpp"
 #include "evolution/generation_count.hpp"
 #include "evolution/individual.hpp"
 #include "evolution/operators.hpp"
@@ -32,6 +33,9 @@ struct MapElitesParams {
     double mutation_sigma = 0.3;  // standard deviation of that step
     int batch = 32;               // births drawn from one archive snapshot and evaluated in parallel
     double init_range = 2.0;      // initial parameters uniform in [-init_range, +init_range)
+    // Who makes the births after generation 0 (emitters.hpp); empty: one
+    // gaussian emitter with uniform selection, the behaviour before emitters.
+    std::vector<EmitterSpec> emitters = {};
 };
 
 // Everything needed to continue a run exactly (with the parameters and seed).
@@ -86,13 +90,17 @@ private:
     std::uint64_t seed_;
     Problem& problem_;
     std::vector<Block> blocks_;
-    // Birth `birth` with parents drawn from `snapshot` (the elites in cell order).
-    Individual conceive_from(const std::vector<const Individual*>& snapshot, std::uint64_t birth) const;
+    // Birth `birth` by its emitter with parents drawn from `pool` (the elites in cell order).
+    Individual conceive_from(const ParentPool& pool, std::uint64_t birth) const;
 
     MapElitesState state_;
-    // The archive's snapshot for conceive(), rebuilt after a cell is first filled
-    // (a replaced elite keeps its place: the map's nodes do not move).
-    mutable std::optional<std::vector<const Individual*>> snapshot_;
+    std::vector<EmitterSpec> emitters_;           // at least one
+    std::vector<std::uint64_t> per_generation_;   // births of a generation for each emitter
+    bool weighs_fitness_ = false;                 // some emitter selects fitness-proportionally
+    // The parents for conceive(), rebuilt after a cell is first filled (a
+    // replaced elite keeps its place: the map's nodes do not move), or after
+    // any insertion when selection weighs fitness.
+    mutable std::optional<ParentPool> pool_;
     // What insert() did with its child: its cell and placement.
     std::optional<std::uint64_t> last_cell_;
     Archive::Placement last_placement_ = Archive::Placement::rejected;

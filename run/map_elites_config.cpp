@@ -66,6 +66,46 @@ const char* algorithm_name(Algorithm algorithm) {
     return algorithm == Algorithm::map_elites ? "map_elites" : "steady_state";
 }
 
+namespace {
+// `emitters`: a non-empty list of emitter objects (emitters.hpp).
+std::vector<EmitterSpec> read_emitters(const json& list, ObjectReader& top, ConfigIssues& issues) {
+    std::vector<EmitterSpec> out;
+    if (!list.is_array() || list.empty()) {
+        issues.add("emitters", "expected a non-empty array of {\"kind\": \"gaussian\" or \"iso_line\", \"share\", "
+                               "\"selection\", ...} objects, got " + list.dump());
+        return out;
+    }
+    json resolved = json::array();
+    for (std::size_t i = 0; i < list.size(); ++i) {
+        ObjectReader r(&list[i], "emitters[" + std::to_string(i) + "]", issues);
+        EmitterSpec e;
+        const std::string kind = r.choice("kind", "gaussian", {"gaussian", "iso_line"});
+        e.kind = kind == "iso_line" ? EmitterKind::iso_line : EmitterKind::gaussian;
+        e.share = r.number("share", 1.0, 0.0, 1e6, /*min_exclusive=*/true);
+        e.selection = r.choice("selection", "uniform", {"uniform", "fitness_proportional"}) == "fitness_proportional"
+                          ? ParentSelection::fitness_proportional
+                          : ParentSelection::uniform;
+        if (e.kind == EmitterKind::iso_line) {
+            e.sigma_iso = r.number("sigma_iso", e.sigma_iso, 0.0, 1000.0);
+            e.sigma_line = r.number("sigma_line", e.sigma_line, 0.0, 1000.0);
+        } else {
+            for (const char* key : {"sigma_iso", "sigma_line"})
+                if (r.raw(key) != nullptr) issues.add(r.path_of(key), "only for kind \"iso_line\"");
+        }
+        r.finish();
+        json item = r.resolved();
+        if (e.kind == EmitterKind::gaussian) {
+            item.erase("sigma_iso");
+            item.erase("sigma_line");
+        }
+        resolved.push_back(std::move(item));
+        out.push_back(e);
+    }
+    top.set_resolved("emitters", resolved);
+    return out;
+}
+}  // namespace
+
 QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
     ConfigIssues& issues = top.issues();
     QdParams qd;
@@ -73,6 +113,9 @@ QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
     const json* archive = top.raw("archive");
     const bool ga = algorithm != Algorithm::map_elites;
     if (ga && archive != nullptr) issues.add("archive", "used only when evolution.algorithm is \"map_elites\"");
+    const json* emitters = top.raw("emitters");
+    if (ga && emitters != nullptr) issues.add("emitters", "used only when evolution.algorithm is \"map_elites\"");
+    if (!ga && emitters != nullptr) qd.emitters = read_emitters(*emitters, top, issues);
     // A steady-state run may declare descriptors only to record them in
     // lineage.csv (to bin a GA run into a MAP-Elites grid afterwards); without
     // them it resolves to the same bytes as before they existed.

@@ -7,6 +7,7 @@
 // existed (its config.json and checkpoints are unchanged).
 #include "core/config_reader.hpp"
 #include "evolution/archive.hpp"
+#include "evolution/emitters.hpp"
 
 #include <cstdint>
 #include <string>
@@ -21,6 +22,7 @@ struct QdParams {
     ArchiveKind archive = ArchiveKind::grid;
     std::uint64_t cvt_cells = 1000;            // archive.cells, CVT only
     double qd_offset = 0.0;                    // archive.qd_offset: QD-score sums fitness - offset
+    std::vector<EmitterSpec> emitters;         // `emitters`; empty: one gaussian emitter, uniform selection
 
     std::vector<std::string> measure_names() const;
     // Cells of the archive: the product of the bins (grid) or cvt_cells.
@@ -36,7 +38,10 @@ struct QdParams {
 // number, no archive limits): its births' measures are then recorded in
 // lineage.csv, so it can be binned like a MAP-Elites run. Records
 // `descriptors` in the resolved config when it is given or the run is
-// map_elites, `archive` only for map_elites. Whether a full archive fits in memory is resource_estimate's
+// map_elites, `archive` only for map_elites. `emitters` (MAP-Elites only;
+// docs/algorithm.md §9.8): a non-empty list of {kind, share, selection,
+// sigma_iso, sigma_line}, recorded in the resolved config only when given (so
+// configs without it resolve as before). Whether a full archive fits in memory is resource_estimate's
 // part (search_genomes counts its cells), with the other limits.
 QdParams read_qd_params(ObjectReader& top, Algorithm algorithm);
 

@@ -9,8 +9,8 @@
 namespace morphogen {
 
 namespace {
-MapElitesParams map_elites_params(const GaParams& p) {
-    return {p.population, p.crossover, p.mutation_rate, p.mutation_sigma, p.batch, p.init_range};
+MapElitesParams map_elites_params(const GaParams& p, const QdParams& qd) {
+    return {p.population, p.crossover, p.mutation_rate, p.mutation_sigma, p.batch, p.init_range, qd.emitters};
 }
 
 // The fitness columns of a history row, from the GA's population or the archive's elites.
@@ -43,7 +43,7 @@ MapElitesState initial_elites_state(const ExperimentConfig& c, int threads) {
 }
 
 EliteDriver::EliteDriver(const ExperimentConfig& c, Problem& problem, RunState& state, int threads)
-    : SearchDriver(map_elites_params(c.evolution), c.run.seed, problem,
+    : SearchDriver(map_elites_params(c.evolution, c.qd), c.run.seed, problem,
                    state.elites ? std::move(*state.elites) : initial_elites_state(c, threads)),
       qd_offset_(c.qd.qd_offset) {}
 

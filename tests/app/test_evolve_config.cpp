@@ -387,7 +387,7 @@ TEST_CASE("bad descriptor configs are refused all at once with their key paths",
     const ExperimentConfig big = read_experiment_config(me(R"(, "network": {"outputs": 15, "hidden": [30]},
         "descriptors": [{"measure": "height", "min": 0, "max": 1, "bins": 1000},
                         {"measure": "area", "min": 0, "max": 1, "bins": 1000}])"), "big.json");
-    CHECK(search_genomes(big).checkpointed == 1'000'001.0);
+    CHECK(search_genomes(big).checkpointed == 1'000'001.0 + 63);  // + the pipeline's lag - 1 kept births
     ResourceLimits limits;
     limits.max_memory_bytes = 32.0 * (1ULL << 30);  // the estimate is 43.5 GiB (27.7 GiB of genomes, 15.8 GiB for the checkpoint)
     std::string memory;
@@ -397,7 +397,7 @@ TEST_CASE("bad descriptor configs are refused all at once with their key paths",
         memory = e.what();
     }
     CHECK_THAT(memory, Catch::Contains("big.json: descriptors, "));
-    CHECK_THAT(memory, Catch::Contains("genomes (a full archive of 1,000,000 cells twice, batch, best) x "));
+    CHECK_THAT(memory, Catch::Contains("genomes (a full archive of 1,000,000 cells twice, births in flight, best) x "));
     // the same archive in a GA-sized grid fits
     const ExperimentConfig small = read_experiment_config(me(R"(, "descriptors": [{"measure": "height", "min": 0, "max": 1, "bins": 20}])"), "s");
     CHECK_NOTHROW(check_resource_limits(small, evolution_workload(small), limits, "s.json"));
@@ -485,4 +485,44 @@ TEST_CASE("the schedule: the pipeline by default, batch where a config sets batc
                Catch::Contains("evolution.batch") && Catch::Contains("batch\" only"));
     CHECK_THAT(config_errors(json{{"evolution", {{"lag", 0}}}}), Catch::Contains("evolution.lag"));
     CHECK_THAT(config_errors(json{{"evolution", {{"schedule", "waves"}}}}), Catch::Contains("evolution.schedule"));
+}
+
+TEST_CASE("MAP-Elites emitters: read, resolved only when given, refused where they do not apply",
+          "[app][config][emitters]") {
+    const json base = json::parse(R"({"evolution": {"algorithm": "map_elites"},
+        "descriptors": [{"measure": "height", "min": 0, "max": 10, "bins": 4}]})");
+    const ExperimentConfig plain = read_experiment_config(base, "x");
+    CHECK(plain.qd.emitters.empty());
+    CHECK_FALSE(plain.resolved.contains("emitters"));
+    json with = base;
+    with["emitters"] = json::parse(R"([{"kind": "iso_line", "share": 3, "sigma_line": 0.5},
+                                       {"selection": "fitness_proportional"}])");
+    const ExperimentConfig two = read_experiment_config(with, "x");
+    REQUIRE(two.qd.emitters.size() == 2);
+    CHECK(two.qd.emitters[0].kind == EmitterKind::iso_line);
+    CHECK(two.qd.emitters[0].share == 3);
+    CHECK(two.qd.emitters[0].sigma_iso == 0.05);
+    CHECK(two.qd.emitters[0].sigma_line == 0.5);
+    CHECK(two.qd.emitters[1].kind == EmitterKind::gaussian);
+    CHECK(two.qd.emitters[1].selection == ParentSelection::fitness_proportional);
+    CHECK(two.resolved["emitters"][0] ==
+          json::parse(R"({"kind": "iso_line", "share": 3.0, "selection": "uniform", "sigma_iso": 0.05, "sigma_line": 0.5})"));
+    CHECK(two.resolved["emitters"][1] ==
+          json::parse(R"({"kind": "gaussian", "share": 1.0, "selection": "fitness_proportional"})"));
+    CHECK(read_experiment_config(two.resolved, "again").resolved == two.resolved);
+    CHECK(schema_errors(two.resolved) == "");
+
+    auto refused = [&](const json& emitters, const std::string& why) {
+        json bad = base;
+        bad["emitters"] = emitters;
+        CHECK_THAT(config_errors(bad), Catch::Contains(why));
+    };
+    refused(json::array(), "non-empty array");
+    refused(json::parse(R"([{"kind": "cma"}])"), "emitters[0].kind");
+    refused(json::parse(R"([{"share": 0}])"), "emitters[0].share");
+    refused(json::parse(R"([{"sigma_iso": 0.1}])"), "only for kind \"iso_line\"");
+    refused(json::parse(R"([{}, {"selection": "tournament"}])"), "emitters[1].selection");
+    refused(json::parse(R"([{"kind": "iso_line", "sigmaiso": 1}])"), "emitters[0].sigmaiso");
+    CHECK_THAT(config_errors(json{{"emitters", json::array({json::object()})}}),
+               Catch::Contains("emitters") && Catch::Contains("map_elites"));
 }

@@ -1,0 +1,211 @@
+// MAP-Elites emitters (emitters.hpp): shares that add up to the generation,
+// iso+line and fitness-proportional statistics, the default equal to the
+// behaviour before emitters, and the same run for any threads, order of
+// results and stop.
+#include "evolution/emitters.hpp"
+#include "evolution/map_elites.hpp"
+#include "evolution/map_elites_state_json.hpp"
+#include "evolution/pipeline.hpp"
+#include "evolution/thread_evaluator.hpp"
+#include "tests/evolution/toy_problems.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <numeric>
+#include <optional>
+#include <random>
+
+using namespace morphogen;
+using morphogen::test::DescribedSphereProblem;
+
+namespace {
+EmitterSpec iso_line(double share, double sigma_iso, double sigma_line,
+                     ParentSelection selection = ParentSelection::uniform) {
+    EmitterSpec e;
+    e.kind = EmitterKind::iso_line;
+    e.share = share;
+    e.sigma_iso = sigma_iso;
+    e.sigma_line = sigma_line;
+    e.selection = selection;
+    return e;
+}
+
+Individual elite(std::uint64_t id, std::vector<double> params, double fitness) {
+    Individual e;
+    e.id = id;
+    e.params = std::move(params);
+    e.fitness = fitness;
+    return e;
+}
+
+BirthRules rules(std::uint64_t population) { return {population, 2.0, 0.3, 0.05, 0.3}; }
+
+MapElitesState empty_state() { return MapElitesState{0, Archive::grid({{"x", -2, 3, 8}, {"y", -2, 3, 8}}), {}, 0, 0}; }
+
+const auto ignore = [](const Individual&, const std::string&, const Inserted&, const std::string&) {};
+const auto never = [] { return false; };
+
+std::string run(Problem& problem, const MapElitesParams& params, GenomeEvaluator& evaluator, std::uint64_t births,
+                const BirthSchedule& schedule) {
+    MapElites me(params, 11, problem, empty_state());
+    BirthPipeline pipeline(schedule, me, evaluator);
+    REQUIRE(pipeline.run(births, ignore, never));
+    return map_elites_state_to_json(me.state()).dump();
+}
+}  // namespace
+
+TEST_CASE("emitter shares add up to the generation, by largest remainders", "[evolution][emitters]") {
+    const std::vector<EmitterSpec> three{EmitterSpec{}, EmitterSpec{}, EmitterSpec{}};
+    CHECK(births_per_generation(three, 10) == std::vector<std::uint64_t>{4, 3, 3});
+    std::vector<EmitterSpec> two{EmitterSpec{}, EmitterSpec{}};
+    two[0].share = 3;
+    CHECK(births_per_generation(two, 10) == std::vector<std::uint64_t>{8, 2});  // 7.5 and 2.5: the tie to the first
+    CHECK(births_per_generation(std::vector<EmitterSpec>{EmitterSpec{}}, 7) == std::vector<std::uint64_t>{7});
+    std::mt19937 random(3);
+    for (int trial = 0; trial < 200; ++trial) {
+        std::vector<EmitterSpec> specs(1 + random() % 6);
+        for (EmitterSpec& e : specs) e.share = std::uniform_real_distribution<double>(0.01, 5.0)(random);
+        const std::uint64_t P = 1 + random() % 300;
+        const std::vector<std::uint64_t> n = births_per_generation(specs, P);
+        CHECK(std::accumulate(n.begin(), n.end(), std::uint64_t{0}) == P);
+        double total = 0;
+        for (const EmitterSpec& e : specs) total += e.share;
+        for (std::size_t k = 0; k < specs.size(); ++k) CHECK(std::abs(double(n[k]) - P * specs[k].share / total) < 1.0);
+        // Every birth of a generation has exactly one emitter, in consecutive runs.
+        std::vector<std::uint64_t> counted(specs.size(), 0);
+        for (std::uint64_t b = 3 * P; b < 4 * P; ++b) ++counted[emitter_of(b, n, P)];
+        CHECK(counted == n);
+    }
+    std::vector<EmitterSpec> bad{EmitterSpec{}};
+    bad[0].share = 0;
+    CHECK_THROWS_AS(births_per_generation(bad, 10), std::invalid_argument);
+    CHECK_THROWS_AS(births_per_generation(std::vector<EmitterSpec>{}, 10), std::invalid_argument);
+}
+
+TEST_CASE("iso+line variation: isotropic steps of sigma_iso, line steps of sigma_line", "[evolution][emitters]") {
+    const std::vector<Block> blocks{{0, 2}, {2, 2}};
+    const std::vector<double> x{0.5, -1.0, 2.0, 0.0}, y{1.5, 1.0, 2.0, -3.0};
+    const int n = 20000;
+    {  // One elite: y = x, so the child is x plus the isotropic step alone.
+        const Individual only = elite(3, x, 1.0);
+        const ParentPool pool({&only});
+        double sum = 0, squares = 0;
+        for (int b = 0; b < n; ++b) {
+            const Individual child = emit(iso_line(1, 0.1, 0.7), rules(10), blocks, 4, 5, 10 + b, pool);
+            CHECK(child.parent1 == 3u);
+            for (std::size_t i = 0; i < 4; ++i) {
+                const double step = child.params[i] - x[i];
+                sum += step;
+                squares += step * step;
+            }
+        }
+        const double mean = sum / (4.0 * n), sd = std::sqrt(squares / (4.0 * n) - mean * mean);
+        CHECK(std::abs(mean) < 4 * 0.1 / std::sqrt(4.0 * n));
+        CHECK(sd == Approx(0.1).epsilon(0.03));
+    }
+    {  // Two elites, no isotropic step: the child lies on the line x + t (y - x), t ~ N(0, sigma_line).
+        const Individual a = elite(1, x, 1.0), b = elite(2, y, 2.0);
+        const ParentPool pool({&a, &b});
+        double sum = 0, squares = 0;
+        int on_line = 0;
+        for (int k = 0; k < n; ++k) {
+            const Individual child = emit(iso_line(1, 0.0, 0.7), rules(10), blocks, 4, 8, 10 + k, pool);
+            const std::vector<double>& from = *child.parent1 == 1 ? x : y;
+            const std::vector<double>& to = *child.parent2 == 1 ? x : y;
+            if (child.parent1 == child.parent2) {
+                CHECK(child.params == from);
+                continue;
+            }
+            const double t = (child.params[0] - from[0]) / (to[0] - from[0]);
+            for (std::size_t i = 0; i < 4; ++i) CHECK(child.params[i] == Approx(from[i] + t * (to[i] - from[i])).margin(1e-12));
+            sum += t;
+            squares += t * t;
+            ++on_line;
+        }
+        CHECK(on_line == Approx(n / 2.0).epsilon(0.05));  // parents differ half the time
+        const double mean = sum / on_line, sd = std::sqrt(squares / on_line - mean * mean);
+        CHECK(std::abs(mean) < 4 * 0.7 / std::sqrt(double(on_line)));
+        CHECK(sd == Approx(0.7).epsilon(0.03));
+    }
+    // Generation 0 and an empty archive give random genomes, as the gaussian birth does.
+    const ParentPool none({});
+    CHECK(emit(iso_line(1, 0.1, 0.2), rules(10), blocks, 4, 5, 3, none).params ==
+          emit(EmitterSpec{}, rules(10), blocks, 4, 5, 3, none).params);
+}
+
+TEST_CASE("fitness-proportional selection draws elites by fitness - worst + spread/20", "[evolution][emitters]") {
+    const Individual a = elite(1, {0.0}, 0.0), b = elite(2, {0.0}, 1.0), c = elite(3, {0.0}, 3.0);
+    const ParentPool pool({&a, &b, &c});
+    // Weights 0.15, 1.15, 3.15 (delta = 3/20).
+    const double total = 0.15 + 1.15 + 3.15;
+    std::vector<int> counts(4, 0);
+    const int n = 30000;
+    for (int k = 0; k < n; ++k) {
+        RandomStream stream(17, static_cast<std::uint64_t>(k));
+        ++counts[pool.pick(ParentSelection::fitness_proportional, stream).id];
+    }
+    CHECK(counts[1] / double(n) == Approx(0.15 / total).epsilon(0.08));
+    CHECK(counts[2] / double(n) == Approx(1.15 / total).epsilon(0.03));
+    CHECK(counts[3] / double(n) == Approx(3.15 / total).epsilon(0.02));
+    // Uniform ignores fitness.
+    std::vector<int> uniform(4, 0);
+    for (int k = 0; k < n; ++k) {
+        RandomStream stream(17, static_cast<std::uint64_t>(k));
+        ++uniform[pool.pick(ParentSelection::uniform, stream).id];
+    }
+    for (int id = 1; id <= 3; ++id) CHECK(uniform[id] / double(n) == Approx(1 / 3.0).epsilon(0.03));
+}
+
+TEST_CASE("the default emitter is the MAP-Elites of before; emitters change the run, threads do not",
+          "[evolution][emitters][determinism]") {
+    DescribedSphereProblem problem(6, 2, /*faulty=*/true);
+    const BirthSchedule schedule{ScheduleKind::pipeline, 12, 7};
+    MapElitesParams plain;
+    plain.population = 12;
+    plain.mutation_rate = 0.3;
+    MapElitesParams explicit_gaussian = plain;
+    explicit_gaussian.emitters = {EmitterSpec{}};
+    ThreadEvaluator one(problem, 1);
+    const std::string before = run(problem, plain, one, 400, schedule);
+    CHECK(run(problem, explicit_gaussian, one, 400, schedule) == before);
+
+    MapElitesParams mixed = plain;
+    mixed.emitters = {EmitterSpec{}, iso_line(2, 0.05, 0.3, ParentSelection::fitness_proportional)};
+    const std::string expected = run(problem, mixed, one, 400, schedule);
+    CHECK(expected != before);
+    ThreadEvaluator eight(problem, 8);
+    CHECK(run(problem, mixed, eight, 400, schedule) == expected);
+    // The batch step and the pipeline's batch schedule agree with emitters too.
+    mixed.batch = 5;
+    MapElites stepped5(mixed, 11, problem, empty_state());
+    while (stepped5.state().births < 300) stepped5.step(2);
+    CHECK(run(problem, mixed, eight, 300, {ScheduleKind::batch, 12, 5}) ==
+          map_elites_state_to_json(stepped5.state()).dump());
+}
+
+TEST_CASE("a MAP-Elites run with emitters stopped at any birth continues exactly", "[evolution][emitters][resume]") {
+    DescribedSphereProblem problem(6, 2, true);
+    const BirthSchedule schedule{ScheduleKind::pipeline, 12, 6};
+    MapElitesParams params;
+    params.population = 12;
+    params.mutation_rate = 0.3;
+    params.emitters = {iso_line(1, 0.02, 0.5), EmitterSpec{}, iso_line(1, 0.1, 0.0, ParentSelection::fitness_proportional)};
+    ThreadEvaluator pool(problem, 2);
+    const std::string expected = run(problem, params, pool, 300, schedule);
+    for (std::uint64_t stop_at : {7u, 12u, 13u, 40u, 251u}) {
+        std::optional<MapElitesState> saved;
+        std::vector<Individual> kept;
+        {
+            MapElites me(params, 11, problem, empty_state());
+            BirthPipeline pipeline(schedule, me, pool);
+            CHECK_FALSE(pipeline.run(300, ignore, [&] { return me.births() >= stop_at; }));
+            saved = me.state();
+            kept = pipeline.kept();
+        }
+        MapElites me(params, 11, problem, std::move(*saved));
+        BirthPipeline pipeline(schedule, me, pool, kept);
+        REQUIRE(pipeline.run(300, ignore, never));
+        CHECK(map_elites_state_to_json(me.state()).dump() == expected);
+    }
+}
