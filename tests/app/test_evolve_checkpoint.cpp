@@ -18,6 +18,28 @@ using namespace morphogen;
 using namespace morphogen::test;
 
 namespace {
+using CheckpointEdits = std::vector<std::pair<std::function<void(nlohmann::json&)>, std::string>>;
+
+// Each edit of `content`, written back with its hash right (checkpoint_text)
+// so only the contradiction can refuse it, makes `resume` exit 5 naming
+// `why`, leaving checkpoint.json, lineage.csv and history.csv as they were.
+void check_edits_refused(const fs::path& run, const nlohmann::json& content, const CheckpointEdits& edits) {
+    const std::string lineage = read_text(run / "lineage.csv"), history = read_text(run / "history.csv");
+    for (std::size_t i = 0; i < edits.size(); ++i) {
+        CAPTURE(i, edits[i].second);
+        nlohmann::json changed = content;
+        edits[i].first(changed);
+        REQUIRE(changed != content);
+        const std::string text = checkpoint_text(changed);
+        write_text(run / "checkpoint.json", text);
+        const CliResult r = run_morphogen("resume " + q(run) + " --generations 2");
+        CHECK(r.code == 5);
+        CHECK_THAT(r.output, Catch::Contains("checkpoint") && Catch::Contains(edits[i].second));
+        CHECK(read_text(run / "checkpoint.json") == text);
+        CHECK(read_text(run / "lineage.csv") == lineage);
+        CHECK(read_text(run / "history.csv") == history);
+    }
+}
 std::string run_and_read(const TempDir& tmp);
 // A real checkpoint from a tiny run (2 generations of 8 individuals).
 std::string tiny_checkpoint(const TempDir& tmp) {
@@ -135,22 +157,9 @@ TEST_CASE("a checkpoint that contradicts itself or lineage.csv is refused and le
     const CliResult made =
         run_morphogen("evolve '" + (tmp.path / "tiny.json").string() + "' --out '" + run.string() + "' --generations 1");
     REQUIRE(made.code == 0);
-    const std::string good = read_text(run / "checkpoint.json"), lineage = read_text(run / "lineage.csv"),
-                      history = read_text(run / "history.csv");
+    const std::string good = read_text(run / "checkpoint.json"), lineage = read_text(run / "lineage.csv");
     const nlohmann::json content = checkpoint_content(good, "good");
     REQUIRE(content["ga"]["births"] == 16);
-
-    // Each edit keeps the hash right (checkpoint_text), so only the contradiction can refuse it.
-    auto refused = [&](const nlohmann::json& changed, const std::string& why) {
-        const std::string text = checkpoint_text(changed);
-        write_text(run / "checkpoint.json", text);
-        const CliResult r = run_morphogen("resume '" + run.string() + "' --generations 2");
-        CHECK(r.code == 5);
-        CHECK_THAT(r.output, Catch::Contains("checkpoint") && Catch::Contains(why));
-        CHECK(read_text(run / "checkpoint.json") == text);
-        CHECK(read_text(run / "lineage.csv") == lineage);
-        CHECK(read_text(run / "history.csv") == history);
-    };
     const double best = content["ga"]["best"]["fitness"].get<double>();
     std::size_t child = 0;  // a member born after generation 0 (it has parents), not the best
     while (content["ga"]["population"][child]["parent1"].is_null() ||
@@ -159,7 +168,7 @@ TEST_CASE("a checkpoint that contradicts itself or lineage.csv is refused and le
     // lineage.csv without its last row, and that prefix's hash.
     const std::string shorter = lineage.substr(0, lineage.rfind('\n', lineage.size() - 2) + 1);
 
-    std::vector<std::pair<std::function<void(nlohmann::json&)>, std::string>> edits{
+    check_edits_refused(run, content, {
         {[](nlohmann::json& c) { c["ga"]["births"] = 19, c["config"]["run"]["generations"] = 2; }, "lineage.csv records 16 births"},
         {[](nlohmann::json& c) { c["ga"]["population"][0]["size"] = -1; }, "not a vertex count"},
         {[](nlohmann::json& c) { c["ga"]["population"][1]["size"] = 2.5; }, "not a vertex count"},
@@ -189,14 +198,7 @@ TEST_CASE("a checkpoint that contradicts itself or lineage.csv is refused and le
         {[](nlohmann::json& c) { c["lineage"]["hash"] = "ABCDEF0123456789"; }, "hex"},
         {[](nlohmann::json& c) { c["lineage"]["bytes"] = 3; }, "header"},
         {[](nlohmann::json& c) { c["config"]["run"]["generations"] = 0; }, "beyond"},
-    };
-    for (std::size_t i = 0; i < edits.size(); ++i) {
-        CAPTURE(i, edits[i].second);
-        nlohmann::json changed = content;
-        edits[i].first(changed);
-        REQUIRE(changed != content);
-        refused(changed, edits[i].second);
-    }
+    });
     write_text(run / "checkpoint.json", good);  // the untouched checkpoint still resumes
     CHECK(run_morphogen("resume '" + run.string() + "' --generations 2").code == 0);
 }
@@ -214,15 +216,7 @@ TEST_CASE("a pipeline checkpoint keeps its births in flight; damaged ones are re
     CHECK(content["pending"][3]["id"] == 19);
     CHECK(content["pending"][0]["fitness"].is_null());
 
-    auto refused = [&](const nlohmann::json& changed, const std::string& why) {
-        const std::string text = checkpoint_text(changed);
-        write_text(run / "checkpoint.json", text);
-        const CliResult r = run_morphogen("resume " + q(run) + " --generations 2");
-        CHECK(r.code == 5);
-        CHECK_THAT(r.output, Catch::Contains("checkpoint") && Catch::Contains(why));
-        CHECK(read_text(run / "checkpoint.json") == text);
-    };
-    std::vector<std::pair<std::function<void(nlohmann::json&)>, std::string>> edits{
+    check_edits_refused(run, content, {
         {[](nlohmann::json& c) { c["pending"].erase(3); }, "pending holds 3 births"},
         {[](nlohmann::json& c) { c.erase("pending"); }, "pending holds 0 births"},
         {[](nlohmann::json& c) { c["pending"] = nlohmann::json::array(); }, "pending births"},
@@ -231,14 +225,7 @@ TEST_CASE("a pipeline checkpoint keeps its births in flight; damaged ones are re
         {[](nlohmann::json& c) { c["pending"][0]["parent1"] = 13; }, "conceived from"},
         {[](nlohmann::json& c) { c["pending"][0]["params"].erase(0); }, "parameters"},
         {[](nlohmann::json& c) { c["pending"][0]["zzz"] = 1; }, "unknown key pending[0].zzz"},
-    };
-    for (std::size_t i = 0; i < edits.size(); ++i) {
-        CAPTURE(i, edits[i].second);
-        nlohmann::json changed = content;
-        edits[i].first(changed);
-        REQUIRE(changed != content);
-        refused(changed, edits[i].second);
-    }
+    });
     // The untouched checkpoint resumes to the uninterrupted run's bytes.
     write_text(run / "checkpoint.json", good);
     REQUIRE(run_morphogen("resume " + q(run) + " --generations 2").code == 0);
