@@ -8,7 +8,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <chrono>
 #include <csignal>
 #include <exception>
 #include <memory>
@@ -40,16 +39,11 @@ std::string start_session(Serving& serving, const std::string& config_text) {
 }
 
 // Sends back every result that is ready, one message each; returns how many.
-std::size_t return_results(World& world, ThreadEvaluator& evaluator, std::chrono::microseconds wait) {
-    std::size_t sent = 0;
-    auto send = [&](ScoredBirth&& scored) {
+std::size_t return_results(World& world, ThreadEvaluator& evaluator) {
+    std::vector<ScoredBirth> ready = evaluator.take_ready();
+    for (ScoredBirth& scored : ready)
         world.post(0, tag_result, encode_results({ResultItem{scored.birth, std::move(scored.evaluation)}}));
-        ++sent;
-    };
-    if (std::optional<ScoredBirth> first = evaluator.next(std::chrono::duration_cast<std::chrono::milliseconds>(wait)))
-        send(std::move(*first));
-    for (ScoredBirth& scored : evaluator.take_ready()) send(std::move(scored));
-    return sent;
+    return ready.size();
 }
 }  // namespace
 
@@ -66,7 +60,7 @@ int serve(World& world) {
             // Results first: a finished genome goes back at once, and its
             // thread already has the next one from the queue rank 0 keeps full.
             if (serving.evaluator && serving.evaluator->outstanding() > 0) {
-                if (return_results(world, *serving.evaluator, std::chrono::microseconds(0)) > 0) {
+                if (return_results(world, *serving.evaluator) > 0) {
                     backoff.reset();
                     continue;
                 }
