@@ -93,6 +93,7 @@ int main(int argc, char** argv) {
     add_gallery_command(app, selected);
     add_render_command(app, selected);
     add_bench_command(app, selected);
+    add_bench_qd_command(app, selected);
     add_evolve_command(app, selected);
     add_resume_command(app, selected);
     add_validate_command(app, selected);

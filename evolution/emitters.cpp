@@ -62,6 +62,8 @@ const Individual& ParentPool::pick(ParentSelection selection, RandomStream& stre
 
 Individual emit(const EmitterSpec& emitter, const BirthRules& rules, std::span<const Block> blocks,
                 std::size_t dimension, std::uint64_t seed, std::uint64_t birth, const ParentPool& pool) {
+    if (emitter.kind != EmitterKind::gaussian && emitter.kind != EmitterKind::iso_line)
+        throw std::logic_error("emit() is for the stateless emitters");
     ParentPicker pick;
     if (!pool.empty()) {
         pick = [&pool, selection = emitter.selection](RandomStream& stream) -> const Individual& {

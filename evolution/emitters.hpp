@@ -1,9 +1,10 @@
 #pragma once
 // MAP-Elites emitters (docs/algorithm.md §9.8): who makes which birth of a
 // generation, how it picks its parents from the archive and how it varies
-// them. Stateless emitters only: a birth is a pure function of (the elites at
-// its source, seed, birth), like every birth (§8.4), so they work with the
-// pipeline, MPI and resume unchanged.
+// them. The stateless ones are here: a birth is a pure function of (the
+// elites at its source, seed, birth), like every birth (§8.4). The CMA
+// emitters (cma_me, cma_mae) carry a search distribution in the run's state
+// (cma_emitter.hpp, §9.9); only their parameters are here.
 //
 // - gaussian (the default, the behaviour before emitters): the GA's birth
 //   (operators.hpp conceive_birth: crossover of two parents' blocks, then a
@@ -24,8 +25,14 @@
 
 namespace morphogen {
 
-enum class EmitterKind { gaussian, iso_line };
+enum class EmitterKind { gaussian, iso_line, cma_me, cma_mae };
 enum class ParentSelection { uniform, fitness_proportional };
+// A CMA emitter's parents (cma_emitter.hpp): the children that filled or
+// improved a cell ("filter"), or the best half of the valid ones ("mu").
+enum class CmaParents { filter, mu };
+// When a CMA emitter restarts besides CMA-ES's own stop tests ("basic"):
+// also after an iteration in which no child filled or improved a cell.
+enum class CmaRestart { no_improvement, basic };
 
 struct EmitterSpec {
     EmitterKind kind = EmitterKind::gaussian;
@@ -33,6 +40,12 @@ struct EmitterSpec {
     ParentSelection selection = ParentSelection::uniform;
     double sigma_iso = 0.05;  // iso_line: the isotropic step
     double sigma_line = 0.2;  // iso_line: the step along the line to the second parent
+    double sigma0 = 0.5;         // cma_me, cma_mae: the step size of a (re)start
+    double learning_rate = 0.01; // cma_mae: alpha, how far a cell's threshold moves toward a child that beats it
+    double threshold_min = 0.0;  // cma_mae: the threshold of a cell no child has beaten yet
+    // cma_me's defaults (Fontaine et al. 2020); cma_mae's are mu and basic.
+    CmaParents parents = CmaParents::filter;
+    CmaRestart restart = CmaRestart::no_improvement;
 };
 
 // Births of one generation for each emitter: P x share / (sum of shares),
@@ -67,6 +80,7 @@ private:
 // gaussian is conceive_birth with the pool's picks; iso_line draws, in this
 // order, parent x, parent y, the line's N(0,1), then one N(0,1) per
 // parameter. An empty pool gives a random genome (as conceive_birth does).
+// Not for the CMA kinds (std::logic_error).
 Individual emit(const EmitterSpec& emitter, const BirthRules& rules, std::span<const Block> blocks,
                 std::size_t dimension, std::uint64_t seed, std::uint64_t birth, const ParentPool& pool);
 

@@ -27,6 +27,37 @@ std::optional<std::uint64_t> read_parent(const json& value, const std::string& p
     return read_u64(value, path);
 }
 
+}  // namespace
+
+std::vector<double> genome_from_json(const json& object, std::size_t dimension, const std::string& path,
+                                     GenomeBlobReader* genomes) {
+    if (!object.is_object()) fail(path, "expected an object");
+    if (genomes) {
+        if (object.contains("params")) fail(path + ".params", "genomes are stored in the binary part");
+        if (genomes->dimension() != dimension)
+            fail(path + ".genome", std::to_string(genomes->dimension()) + " parameters per genome, the problem has " +
+                                       std::to_string(dimension));
+        return genomes->take(read_u64(member(object, "genome", path), path + ".genome"), path + ".genome");
+    }
+    const json& params = member(object, "params", path);
+    if (!params.is_array()) fail(path + ".params", "expected an array");
+    if (params.size() != dimension)
+        fail(path + ".params", std::to_string(params.size()) + " parameters, the problem has " + std::to_string(dimension));
+    std::vector<double> out;
+    out.reserve(dimension);
+    for (std::size_t i = 0; i < params.size(); ++i)
+        out.push_back(read_finite(params[i], path + ".params[" + std::to_string(i) + "]"));
+    return out;
+}
+
+void genome_to_json(json& object, const std::vector<double>& params, GenomeBlobWriter* genomes) {
+    if (genomes)
+        object["genome"] = genomes->add(params);
+    else
+        object["params"] = params;
+}
+
+namespace {
 Individual read_individual(const json& object, std::size_t dimension, const std::string& path,
                            GenomeBlobReader* genomes) {
     Individual ind;
@@ -36,22 +67,7 @@ Individual read_individual(const json& object, std::size_t dimension, const std:
     const json& fitness = member(object, "fitness", path);
     ind.fitness = fitness.is_null() ? invalid_fitness : read_finite(fitness, path + ".fitness");
     ind.size = read_finite(member(object, "size", path), path + ".size");
-    if (genomes) {
-        if (object.contains("params")) fail(path + ".params", "genomes are stored in the binary part");
-        if (genomes->dimension() != dimension)
-            fail(path + ".genome", std::to_string(genomes->dimension()) + " parameters per genome, the problem has " +
-                                       std::to_string(dimension));
-        ind.params = genomes->take(read_u64(member(object, "genome", path), path + ".genome"), path + ".genome");
-    } else {
-        const json& params = member(object, "params", path);
-        if (!params.is_array()) fail(path + ".params", "expected an array");
-        if (params.size() != dimension)
-            fail(path + ".params",
-                 std::to_string(params.size()) + " parameters, the problem has " + std::to_string(dimension));
-        ind.params.reserve(dimension);
-        for (std::size_t i = 0; i < params.size(); ++i)
-            ind.params.push_back(read_finite(params[i], path + ".params[" + std::to_string(i) + "]"));
-    }
+    ind.params = genome_from_json(object, dimension, path, genomes);
     if ((ind.parent1 && *ind.parent1 >= ind.id) || (ind.parent2 && *ind.parent2 >= ind.id))
         fail(path, "a parent is not older than its child");
     if (ind.parent2 && !ind.parent1) fail(path, "parent2 without parent1");
@@ -71,10 +87,7 @@ json individual_to_json(const Individual& ind, GenomeBlobWriter* genomes) {
     out["parent2"] = ind.parent2 ? json(*ind.parent2) : json(nullptr);
     out["fitness"] = ind.valid() ? json(ind.fitness) : json(nullptr);
     out["size"] = ind.size;
-    if (genomes)
-        out["genome"] = genomes->add(ind.params);
-    else
-        out["params"] = ind.params;
+    genome_to_json(out, ind.params, genomes);
     return out;
 }
 

@@ -14,8 +14,17 @@
 #include <nlohmann/json.hpp>
 
 #include <string>
+#include <vector>
 
 namespace morphogen {
+
+// A parameter vector of genome length (an individual's, or a CMA emitter's
+// mean or path) into `object`: "genome": index with a blob, else "params".
+void genome_to_json(nlohmann::json& object, const std::vector<double>& params, GenomeBlobWriter* genomes);
+// Reads what genome_to_json wrote: `dimension` finite values. Throws
+// std::invalid_argument naming `path`.
+std::vector<double> genome_from_json(const nlohmann::json& object, std::size_t dimension, const std::string& path,
+                                     GenomeBlobReader* genomes);
 
 nlohmann::json individual_to_json(const Individual& individual, GenomeBlobWriter* genomes = nullptr);
 // Reads one individual stored by individual_to_json (descriptors are not part

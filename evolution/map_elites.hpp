@@ -1,17 +1,19 @@
 #pragma once
-// The MAP-Elites driver (docs/algorithm.md §9), shaped like SteadyStateGA: step()
-// performs one batch. Births [0, P) are random genomes (generation 0); every
-// later birth draws parent 1 and parent 2 uniformly from the occupied cells
-// of the archive as it stood before the batch (cells in index order, the
-// index from the birth's own stream; parent 2 is used only on crossover),
-// then crossover and mutation as in docs/algorithm.md §8.3 (operators.hpp: conceive_birth). The
-// batch is bred in parallel and its children inserted in birth order. So the
-// state after any number of steps is the same for every thread count.
+// The MAP-Elites driver (docs/algorithm.md §9), a Breeder for the birth
+// pipeline (§8.4) with step() for the batch schedule. Births [0, P) are
+// random genomes (generation 0); every later birth is made by its emitter
+// (§9.8, emitters.hpp; the default: parents drawn uniformly from the occupied
+// cells, then crossover and mutation as in §8.3) from the archive as it stood
+// at the birth's source. Children are inserted in birth order, and the CMA
+// emitters (§9.9, cma_emitter.hpp) and the threshold archive change only
+// there. So the state after any number of births is the same for every
+// thread count and process layout.
 //
 // A birth after generation 0 while the archive is still empty (every earlier
 // child was invalid) is a random genome, as in generation 0.
 #include "evolution/archive.hpp"
 #include "evolution/batch.hpp"
+#include "evolution/cma_emitter.hpp"
 #include "evolution/emitters.hpp"
 #include "evolution/generation_count.hpp"
 #include "evolution/individual.hpp"
@@ -20,6 +22,7 @@
 #include "evolution/problem.hpp"
 
 #include <cstdint>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -46,6 +49,13 @@ struct MapElitesState {
     std::optional<Individual> best;             // best valid individual ever born (earliest on ties)
     std::uint64_t invalid_in_generation = 0;    // invalid births so far in the current generation
     std::uint64_t new_cells_in_generation = 0;  // cells first filled so far in the current generation
+    // One per emitter of the parameters when any is a CMA emitter (the
+    // stateless ones' entries stay default), else empty.
+    std::vector<CmaEmitterState> emitters = {};
+    // With a cma_mae emitter, the threshold archive (§9.9): the cells whose
+    // threshold rose above threshold_min, and that threshold. Every such cell
+    // holds an elite (a child that beats a threshold enters its cell).
+    std::map<std::uint64_t, double> thresholds = {};
 };
 
 struct EliteBatchOutcome {
@@ -92,11 +102,25 @@ private:
     std::vector<Block> blocks_;
     // Birth `birth` by its emitter with parents drawn from `pool` (the elites in cell order).
     Individual conceive_from(const ParentPool& pool, std::uint64_t birth) const;
+    // The emitter of a birth after generation 0, and whether `birth` is its
+    // last one in its generation (its CMA iteration ends there).
+    std::size_t emitter_index(std::uint64_t birth) const { return emitter_of(birth, per_generation_, population()); }
+    bool ends_iteration(std::uint64_t birth, std::size_t emitter) const;
+    // What `child` (valid, in `cell`) means to the CMA emitters, computed
+    // before it enters the archive: updates the thresholds (with cma_mae)
+    // and returns the child as emitter `emitter` ranks it.
+    CmaChild rank_for_emitter(const Individual& child, std::uint64_t cell, std::size_t emitter);
+    // After insertion: ends a CMA iteration, (re)starts emitters.
+    void update_emitters(std::uint64_t birth);
+    void start_emitter(std::size_t emitter, std::uint64_t birth);
 
     MapElitesState state_;
     std::vector<EmitterSpec> emitters_;           // at least one
     std::vector<std::uint64_t> per_generation_;   // births of a generation for each emitter
     bool weighs_fitness_ = false;                 // some emitter selects fitness-proportionally
+    bool has_cma_ = false;                        // some emitter is cma_me or cma_mae
+    bool annealing_ = false;                      // some emitter is cma_mae: thresholds are kept
+    double learning_rate_ = 0.0, threshold_min_ = 0.0;  // the cma_mae emitters' (all the same)
     // The parents for conceive(), rebuilt after a cell is first filled (a
     // replaced elite keeps its place: the map's nodes do not move), or after
     // any insertion when selection weighs fitness.

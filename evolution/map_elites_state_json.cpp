@@ -1,8 +1,10 @@
 #include "evolution/map_elites_state_json.hpp"
 
+#include "evolution/emitter_state_json.hpp"
 #include "evolution/ga_state_json.hpp"
 #include "evolution/state_json_read.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 #include <stdexcept>
@@ -38,6 +40,7 @@ json map_elites_state_to_json(const MapElitesState& state, GenomeBlobWriter* gen
         json row = individual_to_json(elite, genomes);
         row["cell"] = cell;
         row["descriptors"] = elite.descriptors;
+        if (const auto t = state.thresholds.find(cell); t != state.thresholds.end()) row["threshold"] = t->second;
         elites.push_back(std::move(row));
     }
     archive["elites"] = std::move(elites);
@@ -48,14 +51,23 @@ json map_elites_state_to_json(const MapElitesState& state, GenomeBlobWriter* gen
     out["best"] = state.best ? individual_to_json(*state.best, genomes) : json(nullptr);
     if (state.best) out["best"]["descriptors"] = state.best->descriptors;
     out["archive"] = std::move(archive);
+    if (!state.emitters.empty()) out["emitters"] = emitter_states_to_json(state.emitters, genomes);
     return out;
 }
 
 MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind,
                                           const std::vector<DescriptorRange>& ranges, std::uint64_t cells,
                                           std::uint64_t population, std::size_t dimension,
-                                          GenomeBlobReader* genomes) {
+                                          std::span<const EmitterSpec> emitters, GenomeBlobReader* genomes) {
     const std::string root = "map_elites";
+    const std::vector<EmitterSpec> specs =
+        emitters.empty() ? std::vector<EmitterSpec>{EmitterSpec{}} : std::vector<EmitterSpec>(emitters.begin(), emitters.end());
+    const EmitterSpec* annealing = nullptr;
+    bool has_cma = false;
+    for (const EmitterSpec& e : specs) {
+        has_cma = has_cma || is_cma(e.kind);
+        if (e.kind == EmitterKind::cma_mae) annealing = &e;
+    }
     const std::uint64_t births = read_u64(member(document, "births", root), root + ".births");
     const std::uint64_t invalid =
         read_u64(member(document, "invalid_in_generation", root), root + ".invalid_in_generation");
@@ -102,7 +114,19 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
         Individual elite = individual_from_json(elites[i], dimension, path, genomes);
         const std::uint64_t cell = read_u64(member(elites[i], "cell", path), path + ".cell");
         elite.descriptors = read_numbers(member(elites[i], "descriptors", path), path + ".descriptors");
-        if (elites[i].size() != 8) fail(path, "unexpected keys");
+        const bool has_threshold = elites[i].contains("threshold");
+        if (elites[i].size() != (has_threshold ? 9u : 8u)) fail(path, "unexpected keys");
+        if (has_threshold) {
+            if (!annealing) fail(path + ".threshold", "only a run with a cma_mae emitter keeps thresholds");
+            const json& t = elites[i]["threshold"];
+            if (!t.is_number() || !std::isfinite(t.get<double>())) fail(path + ".threshold", "expected a finite number");
+            const double threshold = t.get<double>();
+            if (!(threshold > annealing->threshold_min))
+                fail(path + ".threshold", "not above threshold_min (such cells are not stored)");
+            if (threshold > elite.fitness && threshold - elite.fitness > 1e-12 * std::max(1.0, std::fabs(elite.fitness)))
+                fail(path + ".threshold", "above its elite's fitness");
+            state.thresholds.emplace(cell, threshold);
+        }
         if (!elite.valid()) fail(path, "an elite must be valid");
         if (elite.id >= state.births) fail(path + ".id", "not below the birth counter");
         if (!ids.insert(elite.id).second) fail(path + ".id", "duplicate id " + std::to_string(elite.id));
@@ -126,7 +150,12 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
     } else if (state.archive.occupied() > 0) {
         fail(root + ".best", "null though the archive holds elites");
     }
-    if (document.size() != 5) fail(root, "unexpected keys");
+    if (has_cma) {
+        const std::vector<std::uint64_t> per_generation = births_per_generation(specs, population);
+        const EmitterStateShape shape{specs, per_generation, population, births, dimension};
+        state.emitters = emitter_states_from_json(member(document, "emitters", root), shape, root + ".emitters", genomes);
+    }
+    if (document.size() != (has_cma ? 6u : 5u)) fail(root, "unexpected keys");
     if (genomes) genomes->check_all_taken(root);
     return state;
 }

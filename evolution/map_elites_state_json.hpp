@@ -3,7 +3,9 @@
 //   {"births": n, "invalid_in_generation": n, "new_cells_in_generation": n,
 //    "best": individual | null,
 //    "archive": {"type": "grid" | "cvt", "centroids": [...] (cvt only, row-major),
-//                "elites": [{"cell": c, "descriptors": [...], <individual>}, ...] (cell order)}}
+//                "elites": [{"cell": c, "descriptors": [...], <individual>,
+//                            "threshold": t (cma_mae runs, cells whose threshold rose)}, ...] (cell order)},
+//    "emitters": [...] (runs with a CMA emitter: emitter_state_json.hpp)}
 // The CVT centroids are stored so a resume never recomputes them. Genomes:
 // inline or in a blob, as in ga_state_json.hpp.
 #include "evolution/genome_blob.hpp"
@@ -12,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace morphogen {
@@ -24,10 +27,13 @@ nlohmann::json map_elites_state_to_json(const MapElitesState& state, GenomeBlobW
 // increasing cell order, their descriptors mapping to their cell, ids unique
 // and below the birth counter, the best valid and at least as fit as every
 // elite; with `genomes`, every genome of the blob belongs to exactly one
-// individual. Throws std::invalid_argument naming the first defect ("map_elites.…").
+// individual; with CMA emitters, their states (emitter_state_json.hpp) and
+// every threshold above the cma_mae emitters' threshold_min and at most its
+// elite's fitness. `emitters`: the config's (empty: the default gaussian).
+// Throws std::invalid_argument naming the first defect ("map_elites.…").
 MapElitesState map_elites_state_from_json(const nlohmann::json& document, ArchiveKind kind,
                                           const std::vector<DescriptorRange>& ranges, std::uint64_t cells,
                                           std::uint64_t population, std::size_t dimension,
-                                          GenomeBlobReader* genomes = nullptr);
+                                          std::span<const EmitterSpec> emitters, GenomeBlobReader* genomes = nullptr);
 
 }  // namespace morphogen

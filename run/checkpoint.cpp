@@ -4,6 +4,7 @@
 #include "core/errors.hpp"
 #include "core/json_text.hpp"
 #include "core/network.hpp"
+#include "evolution/emitter_state_json.hpp"
 #include "evolution/ga_state_json.hpp"
 #include "evolution/genome_blob.hpp"
 #include "evolution/map_elites_state_json.hpp"
@@ -204,6 +205,9 @@ void inline_genomes(json& content, GenomeBlobReader& genomes) {
         json& me = content["map_elites"];
         if (me.contains("archive")) each(me["archive"], "elites", "map_elites.archive.elites");
         if (me.contains("best")) inline_genome(me["best"], genomes, "map_elites.best");
+        if (me.contains("emitters"))
+            for_each_emitter_vector(me["emitters"], "map_elites.emitters",
+                                    [&](json& holder, const std::string& path) { inline_genome(holder, genomes, path); });
     }
     each(content, "pending", "pending");
     genomes.check_all_taken("the checkpoint");
@@ -305,7 +309,7 @@ RunState load_checkpoint(const std::filesystem::path& path) {
         if (config.algorithm == Algorithm::map_elites) {
             if (!content.contains("map_elites")) throw refuse("its config is a map_elites run but it holds no map_elites state");
             state.elites = map_elites_state_from_json(content.at("map_elites"), config.qd.archive, config.qd.descriptors,
-                                                      config.qd.cells(), P, dimension, genomes);
+                                                      config.qd.cells(), P, dimension, config.qd.emitters, genomes);
         } else {
             state.ga = ga_state_from_json(content.at("ga"), config.evolution, dimension, genomes);
         }

@@ -1,10 +1,12 @@
 #include "run/map_elites_config.hpp"
 
+#include "evolution/cma_emitter.hpp"
 #include "evolution/cvt.hpp"
 #include "fitness/descriptors.hpp"
 
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 
 namespace morphogen {
@@ -71,16 +73,20 @@ namespace {
 std::vector<EmitterSpec> read_emitters(const json& list, ObjectReader& top, ConfigIssues& issues) {
     std::vector<EmitterSpec> out;
     if (!list.is_array() || list.empty()) {
-        issues.add("emitters", "expected a non-empty array of {\"kind\": \"gaussian\" or \"iso_line\", \"share\", "
+        issues.add("emitters", "expected a non-empty array of {\"kind\": \"gaussian\", \"iso_line\", \"cma_me\" or \"cma_mae\", \"share\", "
                                "\"selection\", ...} objects, got " + list.dump());
         return out;
     }
     json resolved = json::array();
+    std::optional<EmitterSpec> annealing_spec;
     for (std::size_t i = 0; i < list.size(); ++i) {
         ObjectReader r(&list[i], "emitters[" + std::to_string(i) + "]", issues);
         EmitterSpec e;
-        const std::string kind = r.choice("kind", "gaussian", {"gaussian", "iso_line"});
-        e.kind = kind == "iso_line" ? EmitterKind::iso_line : EmitterKind::gaussian;
+        const std::string kind = r.choice("kind", "gaussian", {"gaussian", "iso_line", "cma_me", "cma_mae"});
+        e.kind = kind == "iso_line" ? EmitterKind::iso_line
+                 : kind == "cma_me" ? EmitterKind::cma_me
+                 : kind == "cma_mae" ? EmitterKind::cma_mae
+                                     : EmitterKind::gaussian;
         e.share = r.number("share", 1.0, 0.0, 1e6, /*min_exclusive=*/true);
         e.selection = r.choice("selection", "uniform", {"uniform", "fitness_proportional"}) == "fitness_proportional"
                           ? ParentSelection::fitness_proportional
@@ -92,12 +98,40 @@ std::vector<EmitterSpec> read_emitters(const json& list, ObjectReader& top, Conf
             for (const char* key : {"sigma_iso", "sigma_line"})
                 if (r.raw(key) != nullptr) issues.add(r.path_of(key), "only for kind \"iso_line\"");
         }
+        const bool cma = is_cma(e.kind), annealing = e.kind == EmitterKind::cma_mae;
+        if (cma) {
+            e.sigma0 = r.number("sigma0", e.sigma0, 0.0, 1000.0, /*min_exclusive=*/true);
+            e.parents = r.choice("parents", annealing ? "mu" : "filter", {"filter", "mu"}) == "mu" ? CmaParents::mu
+                                                                                                  : CmaParents::filter;
+            e.restart = r.choice("restart", annealing ? "basic" : "no_improvement", {"no_improvement", "basic"}) == "basic"
+                            ? CmaRestart::basic
+                            : CmaRestart::no_improvement;
+        } else {
+            for (const char* key : {"sigma0", "parents", "restart"})
+                if (r.raw(key) != nullptr) issues.add(r.path_of(key), "only for kinds \"cma_me\" and \"cma_mae\"");
+        }
+        if (annealing) {
+            e.learning_rate = r.number("learning_rate", e.learning_rate, 0.0, 1.0);
+            e.threshold_min = r.number("threshold_min", e.threshold_min, -1e12, 1e12);
+            if (annealing_spec && (annealing_spec->learning_rate != e.learning_rate ||
+                                   annealing_spec->threshold_min != e.threshold_min))
+                issues.add(r.path_of("learning_rate"), "every cma_mae emitter must have the same learning_rate and "
+                                                       "threshold_min (they share one threshold archive)");
+            if (!annealing_spec) annealing_spec = e;
+        } else {
+            for (const char* key : {"learning_rate", "threshold_min"})
+                if (r.raw(key) != nullptr) issues.add(r.path_of(key), "only for kind \"cma_mae\"");
+        }
         r.finish();
         json item = r.resolved();
-        if (e.kind == EmitterKind::gaussian) {
+        if (e.kind != EmitterKind::iso_line) {
             item.erase("sigma_iso");
             item.erase("sigma_line");
         }
+        if (!cma)
+            for (const char* key : {"sigma0", "parents", "restart"}) item.erase(key);
+        if (!annealing)
+            for (const char* key : {"learning_rate", "threshold_min"}) item.erase(key);
         resolved.push_back(std::move(item));
         out.push_back(e);
     }

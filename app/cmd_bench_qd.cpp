@@ -1,0 +1,154 @@
+// `morphogen bench-qd`: the sphere linear-projection benchmark (docs/algorithm.md
+// §9.10, evolution/sphere_projection.hpp) run through evolution/'s MAP-Elites
+// with the settings of the CMA-MAE paper, so the emitters can be checked
+// against its table: 540 births per iteration (one generation), a 100 x 100
+// grid, n = 100, sigma 0.5; MAP-Elites (gaussian on every parameter),
+// MAP-Elites (line) (iso_line 0.5 / 0.2), CMA-ME (15 cma_me emitters of 36,
+// mu parents, basic restarts: the paper's baseline) and CMA-MAE (15 cma_mae
+// emitters of 36, alpha 0.01, threshold_min 0). Generation 0 (540 random
+// genomes, uniform in [-1, 1)) is part of the budget. Prints the QD-score as
+// the paper normalises it (the sum of the elites' objectives / cells), the
+// coverage, the best objective, and the time per birth of the whole loop (an
+// upper bound on an emitter's own cost per birth).
+#include "app/commands.hpp"
+#include "evolution/map_elites.hpp"
+#include "evolution/sphere_projection.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+
+namespace morphogen {
+
+namespace {
+
+struct BenchQdOptions {
+    std::vector<std::string> algorithms{"map_elites", "line", "cma_me", "cma_mae"};
+    std::uint64_t iterations = 10000;
+    std::size_t dimension = 100;
+    int seeds = 1;
+    std::uint64_t seed = 1;
+    bool json = false;
+};
+
+constexpr int kPerIteration = 540, kCmaEmitters = 15;
+
+MapElitesParams params_for(const std::string& algorithm) {
+    MapElitesParams p;
+    p.population = kPerIteration;
+    p.batch = kPerIteration;
+    p.crossover = 0.0;
+    p.mutation_rate = 1.0;  // pyribs' GaussianEmitter steps every parameter
+    p.mutation_sigma = 0.5;
+    p.init_range = 1.0;
+    EmitterSpec e;
+    if (algorithm == "map_elites") {
+        p.emitters = {e};
+    } else if (algorithm == "line") {
+        e.kind = EmitterKind::iso_line;
+        e.sigma_iso = 0.5;
+        e.sigma_line = 0.2;
+        p.emitters = {e};
+    } else if (algorithm == "cma_me" || algorithm == "cma_mae") {
+        e.kind = algorithm == "cma_me" ? EmitterKind::cma_me : EmitterKind::cma_mae;
+        e.sigma0 = 0.5;
+        e.parents = CmaParents::mu;
+        e.restart = CmaRestart::basic;
+        e.learning_rate = 0.01;
+        e.threshold_min = 0.0;
+        p.emitters.assign(kCmaEmitters, e);
+    } else {
+        throw std::invalid_argument("unknown algorithm " + algorithm);
+    }
+    return p;
+}
+
+struct QdRun {
+    double qd_score = 0, coverage = 0, best = 0, seconds = 0;
+    std::uint64_t births = 0, restarts = 0;
+};
+
+QdRun run_one(const std::string& algorithm, const BenchQdOptions& o, std::uint64_t seed) {
+    SphereProjection problem(o.dimension);
+    Archive archive = Archive::grid(problem.archive_ranges());
+    const double cells = static_cast<double>(archive.cells());
+    MapElites me(params_for(algorithm), seed, problem, MapElitesState{0, std::move(archive), {}, 0, 0});
+    const auto start = std::chrono::steady_clock::now();
+    const std::uint64_t target = o.iterations * kPerIteration;
+    while (me.state().births < target) me.step(1);
+    QdRun run;
+    run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    run.births = me.state().births;
+    double sum = 0.0;
+    for (const auto& [cell, elite] : me.state().archive.elites()) sum += elite.fitness;
+    run.qd_score = sum / cells;
+    run.coverage = 100.0 * static_cast<double>(me.state().archive.occupied()) / cells;
+    run.best = me.state().best ? me.state().best->fitness : 0.0;
+    for (const CmaEmitterState& e : me.state().emitters) run.restarts += e.restarts;
+    return run;
+}
+
+double mean_of(const std::vector<QdRun>& runs, double QdRun::*field) {
+    double sum = 0.0;
+    for (const QdRun& r : runs) sum += r.*field;
+    return sum / static_cast<double>(runs.size());
+}
+
+int run_bench_qd(const BenchQdOptions& o) {
+    nlohmann::json report = nlohmann::json::object();
+    report["iterations"] = o.iterations;
+    report["births_per_iteration"] = kPerIteration;
+    report["dimension"] = o.dimension;
+    if (!o.json)
+        std::printf("sphere linear projection, n = %zu, %llu iterations x %d births, 100 x 100 cells, %d seed(s)\n",
+                    o.dimension, static_cast<unsigned long long>(o.iterations), kPerIteration, o.seeds);
+    for (const std::string& algorithm : o.algorithms) {
+        std::vector<QdRun> runs;
+        nlohmann::json rows = nlohmann::json::array();
+        for (int s = 0; s < o.seeds; ++s) {
+            runs.push_back(run_one(algorithm, o, o.seed + static_cast<std::uint64_t>(s)));
+            const QdRun& r = runs.back();
+            rows.push_back({{"seed", o.seed + static_cast<std::uint64_t>(s)}, {"qd_score", r.qd_score},
+                            {"coverage_percent", r.coverage}, {"best", r.best}, {"seconds", r.seconds},
+                            {"us_per_birth", 1e6 * r.seconds / static_cast<double>(r.births)},
+                            {"restarts", r.restarts}});
+            if (!o.json)
+                std::printf("%-10s seed %llu: QD-score %6.2f  coverage %6.2f%%  best %6.2f  %5.2f us/birth  restarts %llu\n",
+                            algorithm.c_str(), static_cast<unsigned long long>(o.seed + s), r.qd_score, r.coverage,
+                            r.best, 1e6 * r.seconds / static_cast<double>(r.births),
+                            static_cast<unsigned long long>(r.restarts));
+        }
+        report["algorithms"][algorithm] = {{"runs", rows},
+                                           {"mean_qd_score", mean_of(runs, &QdRun::qd_score)},
+                                           {"mean_coverage_percent", mean_of(runs, &QdRun::coverage)},
+                                           {"mean_best", mean_of(runs, &QdRun::best)}};
+        if (!o.json)
+            std::printf("%-10s mean   : QD-score %6.2f  coverage %6.2f%%  best %6.2f\n", algorithm.c_str(),
+                        mean_of(runs, &QdRun::qd_score), mean_of(runs, &QdRun::coverage), mean_of(runs, &QdRun::best));
+    }
+    if (o.json) std::printf("%s\n", report.dump(2).c_str());
+    return 0;
+}
+
+}  // namespace
+
+void add_bench_qd_command(CLI::App& root, CommandRunner& selected) {
+    auto options = std::make_shared<BenchQdOptions>();
+    CLI::App* cmd = root.add_subcommand("bench-qd", "Run the sphere linear-projection QD benchmark (emitters vs the papers)");
+    cmd->add_option("--algorithm", options->algorithms, "map_elites, line, cma_me, cma_mae (default: all four)")
+        ->check(CLI::IsMember({"map_elites", "line", "cma_me", "cma_mae"}));
+    cmd->add_option("--iterations", options->iterations, "Iterations of 540 births (default 10000, the papers')")
+        ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
+    cmd->add_option("--dimension", options->dimension, "Parameters n (default 100)")->check(CLI::Range(2, 100000));
+    cmd->add_option("--seeds", options->seeds, "Runs per algorithm, seeds seed, seed+1, ... (default 1)")
+        ->check(CLI::Range(1, 1000));
+    cmd->add_option("--seed", options->seed, "First seed (default 1)");
+    cmd->add_flag("--json", options->json, "Print one JSON object");
+    select_on_pick(cmd, selected, options, run_bench_qd);
+}
+
+}  // namespace morphogen

@@ -1,0 +1,58 @@
+#include "evolution/cma_emitter.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numeric>
+
+namespace morphogen {
+
+void start_cma_emitter(const EmitterSpec& spec, CmaEmitterState& state, const Individual& elite) {
+    if (state.started) ++state.restarts;
+    state.started = true;
+    state.cma = sep_cma_start(elite.params, spec.sigma0);
+    state.origin = elite.id;
+    state.children.clear();
+}
+
+Individual sample_cma_child(const CmaEmitterState& state, std::uint64_t seed, std::uint64_t birth) {
+    RandomStream stream(seed, birth);
+    Individual child;
+    child.id = birth;
+    child.parent1 = state.origin;
+    child.params = sep_cma_sample(state.cma, stream);
+    return child;
+}
+
+bool finish_cma_iteration(const EmitterSpec& spec, CmaEmitterState& state) {
+    std::vector<CmaChild> children = std::move(state.children);
+    state.children.clear();
+    std::vector<std::size_t> order(children.size());
+    std::iota(order.begin(), order.end(), 0);
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        if (children[a].status != children[b].status) return children[a].status > children[b].status;
+        return children[a].value > children[b].value;
+    });
+    std::size_t valid = 0, improving = 0;
+    double low = std::numeric_limits<double>::infinity(), high = -low;
+    for (const CmaChild& c : children) {
+        if (!std::isfinite(c.value)) continue;
+        ++valid;
+        improving += c.status > 0 ? 1 : 0;
+        low = std::min(low, c.value);
+        high = std::max(high, c.value);
+    }
+    const std::size_t mu = spec.parents == CmaParents::filter
+                               ? improving
+                               : std::min(valid, std::max<std::size_t>(1, children.size() / 2));
+    if (mu == 0) return true;
+    std::vector<const std::vector<double>*> parents;
+    parents.reserve(mu);
+    for (std::size_t k = 0; k < mu; ++k) parents.push_back(&children[order[k]].params);
+    sep_cma_update(state.cma, parents);
+    const bool flat = valid > 1 && high - low < 1e-12;
+    const bool stalled = spec.restart == CmaRestart::no_improvement && improving == 0;
+    return stalled || flat || sep_cma_converged(state.cma);
+}
+
+}  // namespace morphogen

@@ -1,0 +1,142 @@
+#include "evolution/emitter_state_json.hpp"
+
+#include "evolution/ga_state_json.hpp"
+#include "evolution/state_json_read.hpp"
+
+#include <cmath>
+
+namespace morphogen {
+
+using nlohmann::json;
+using state_json::fail;
+using state_json::member;
+using state_json::read_u64;
+
+namespace {
+constexpr const char* kVectors[] = {"mean", "variances", "path_c", "path_sigma"};
+
+json vector_json(const std::vector<double>& v, GenomeBlobWriter* genomes) {
+    json out = json::object();
+    genome_to_json(out, v, genomes);
+    return out;
+}
+
+double read_number(const json& value, const std::string& path) {
+    if (!value.is_number()) fail(path, "expected a number");
+    const double v = value.get<double>();
+    if (!std::isfinite(v)) fail(path, "not finite");
+    return v;
+}
+
+// The children a started emitter holds after `births` births: its births so
+// far in the current generation, until its iteration ends (then none).
+std::uint64_t expected_children(const EmitterStateShape& shape, std::size_t emitter) {
+    if (shape.births < shape.population) return 0;
+    std::uint64_t first = 0;
+    for (std::size_t k = 0; k < emitter; ++k) first += shape.per_generation[k];
+    const std::uint64_t done = shape.births % shape.population;
+    if (done <= first) return 0;
+    const std::uint64_t made = done - first;
+    return made >= shape.per_generation[emitter] ? 0 : made;
+}
+}  // namespace
+
+json emitter_states_to_json(std::span<const CmaEmitterState> states, GenomeBlobWriter* genomes) {
+    json list = json::array();
+    for (const CmaEmitterState& s : states) {
+        if (!s.started) {
+            list.push_back(nullptr);
+            continue;
+        }
+        json e = json::object();
+        e["restarts"] = s.restarts;
+        e["origin"] = s.origin ? json(*s.origin) : json(nullptr);
+        e["sigma"] = s.cma.sigma;
+        e["updates"] = s.cma.updates;
+        e["mean"] = vector_json(s.cma.mean, genomes);
+        e["variances"] = vector_json(s.cma.variances, genomes);
+        e["path_c"] = vector_json(s.cma.path_c, genomes);
+        e["path_sigma"] = vector_json(s.cma.path_sigma, genomes);
+        json children = json::array();
+        for (const CmaChild& c : s.children) {
+            json row = vector_json(c.params, genomes);
+            row["status"] = c.status;
+            row["value"] = std::isfinite(c.value) ? json(c.value) : json(nullptr);
+            children.push_back(std::move(row));
+        }
+        e["children"] = std::move(children);
+        list.push_back(std::move(e));
+    }
+    return list;
+}
+
+std::vector<CmaEmitterState> emitter_states_from_json(const json& list, const EmitterStateShape& shape,
+                                                      const std::string& path, GenomeBlobReader* genomes) {
+    if (!list.is_array()) fail(path, "expected an array");
+    if (list.size() != shape.specs.size())
+        fail(path, std::to_string(list.size()) + " entries, the config has " + std::to_string(shape.specs.size()) +
+                       " emitters");
+    std::vector<CmaEmitterState> out(list.size());
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        const std::string at = path + "[" + std::to_string(k) + "]";
+        const json& e = list[k];
+        if (e.is_null()) continue;
+        if (!is_cma(shape.specs[k].kind)) fail(at, "a stateless emitter's entry must be null");
+        if (!e.is_object() || e.size() != 9) fail(at, "expected an object with the 9 keys of a CMA emitter");
+        CmaEmitterState& s = out[k];
+        s.started = true;
+        s.restarts = read_u64(member(e, "restarts", at), at + ".restarts");
+        const json& origin = member(e, "origin", at);
+        if (!origin.is_null()) {
+            s.origin = read_u64(origin, at + ".origin");
+            if (*s.origin >= shape.births) fail(at + ".origin", "not below the birth counter");
+        }
+        s.cma.sigma = read_number(member(e, "sigma", at), at + ".sigma");
+        if (!(s.cma.sigma > 0.0)) fail(at + ".sigma", "must be > 0");
+        s.cma.updates = read_u64(member(e, "updates", at), at + ".updates");
+        std::vector<double>* targets[] = {&s.cma.mean, &s.cma.variances, &s.cma.path_c, &s.cma.path_sigma};
+        for (std::size_t v = 0; v < 4; ++v)
+            *targets[v] = genome_from_json(member(e, kVectors[v], at), shape.dimension, at + "." + kVectors[v], genomes);
+        for (std::size_t i = 0; i < s.cma.variances.size(); ++i)
+            if (!(s.cma.variances[i] > 0.0))
+                fail(at + ".variances", "value " + std::to_string(i) + " is not > 0");
+        const json& children = member(e, "children", at);
+        if (!children.is_array()) fail(at + ".children", "expected an array");
+        const std::uint64_t expected = expected_children(shape, k);
+        if (children.size() != expected)
+            fail(at + ".children", std::to_string(children.size()) + " children, its births so far in this iteration are " +
+                                       std::to_string(expected));
+        for (std::size_t c = 0; c < children.size(); ++c) {
+            const std::string cat = at + ".children[" + std::to_string(c) + "]";
+            const json& row = children[c];
+            if (!row.is_object() || row.size() != 3) fail(cat, "expected {status, value, genome}");
+            CmaChild child;
+            const std::uint64_t status = read_u64(member(row, "status", cat), cat + ".status");
+            if (status > 2) fail(cat + ".status", "must be 0, 1 or 2");
+            child.status = static_cast<int>(status);
+            const json& value = member(row, "value", cat);
+            child.value = value.is_null() ? invalid_fitness : read_number(value, cat + ".value");
+            if (value.is_null() && child.status != 0) fail(cat + ".status", "an invalid child must have status 0");
+            child.params = genome_from_json(row, shape.dimension, cat, genomes);
+            s.children.push_back(std::move(child));
+        }
+    }
+    return out;
+}
+
+void for_each_emitter_vector(json& list, const std::string& path,
+                             const std::function<void(json&, const std::string&)>& each) {
+    if (!list.is_array()) return;
+    for (std::size_t k = 0; k < list.size(); ++k) {
+        json& e = list[k];
+        if (!e.is_object()) continue;
+        const std::string at = path + "[" + std::to_string(k) + "]";
+        for (const char* key : kVectors)
+            if (e.contains(key)) each(e[key], at + "." + key);
+        if (e.contains("children") && e["children"].is_array())
+            for (std::size_t c = 0; c < e["children"].size(); ++c)
+                each(e["children"][c], at + ".children[" + std::to_string(c) + "]");
+    }
+}
+
+}  // namespace morphogen
