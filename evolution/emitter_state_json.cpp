@@ -60,7 +60,7 @@ json emitter_states_to_json(std::span<const CmaEmitterState> states, GenomeBlobW
         json children = json::array();
         for (const CmaChild& c : s.children) {
             json row = vector_json(c.params, genomes);
-            row["status"] = c.status;
+            row["status"] = static_cast<unsigned>(c.status);
             row["value"] = std::isfinite(c.value) ? json(c.value) : json(nullptr);
             children.push_back(std::move(row));
         }
