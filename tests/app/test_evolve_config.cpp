@@ -526,3 +526,38 @@ TEST_CASE("MAP-Elites emitters: read, resolved only when given, refused where th
     CHECK_THAT(config_errors(json{{"emitters", json::array({json::object()})}}),
                Catch::Contains("emitters") && Catch::Contains("map_elites"));
 }
+
+TEST_CASE("CMA emitters: defaults per kind resolved, keys of other kinds and disagreeing thresholds refused",
+          "[app][config][emitters]") {
+    json config = json::parse(R"({"evolution": {"algorithm": "map_elites"},
+        "descriptors": [{"measure": "height", "min": 0, "max": 10, "bins": 4}]})");
+    config["emitters"] = json::parse(R"([{"kind": "cma_me"}, {"kind": "cma_mae", "share": 2, "learning_rate": 0.1}])");
+    const ExperimentConfig read = read_experiment_config(config, "x");
+    REQUIRE(read.qd.emitters.size() == 2);
+    CHECK(read.qd.emitters[0].kind == EmitterKind::cma_me);
+    CHECK(read.qd.emitters[0].parents == CmaParents::filter);
+    CHECK(read.qd.emitters[0].restart == CmaRestart::no_improvement);
+    CHECK(read.qd.emitters[1].kind == EmitterKind::cma_mae);
+    CHECK(read.qd.emitters[1].parents == CmaParents::mu);
+    CHECK(read.qd.emitters[1].restart == CmaRestart::basic);
+    CHECK(read.qd.emitters[1].learning_rate == 0.1);
+    CHECK(read.resolved["emitters"][0] == json::parse(R"({"kind": "cma_me", "share": 1.0, "selection": "uniform",
+        "sigma0": 0.5, "parents": "filter", "restart": "no_improvement"})"));
+    CHECK(read.resolved["emitters"][1] == json::parse(R"({"kind": "cma_mae", "share": 2.0, "selection": "uniform",
+        "sigma0": 0.5, "parents": "mu", "restart": "basic", "learning_rate": 0.1, "threshold_min": 0.0})"));
+    CHECK(read_experiment_config(read.resolved, "again").resolved == read.resolved);
+    CHECK(schema_errors(read.resolved) == "");
+
+    auto refused = [&](const char* emitters, const std::string& why) {
+        json bad = config;
+        bad["emitters"] = json::parse(emitters);
+        CHECK_THAT(config_errors(bad), Catch::Contains(why));
+    };
+    refused(R"([{"kind": "cma_me", "learning_rate": 0.1}])", "only for kind \"cma_mae\"");
+    refused(R"([{"kind": "gaussian", "sigma0": 0.1}])", "emitters[0].sigma0");
+    refused(R"([{"kind": "cma_me", "sigma0": 0}])", "emitters[0].sigma0");
+    refused(R"([{"kind": "cma_me", "parents": "all"}])", "emitters[0].parents");
+    refused(R"([{"kind": "cma_mae", "restart": "never"}])", "emitters[0].restart");
+    refused(R"([{"kind": "cma_mae", "learning_rate": 1.5}])", "emitters[0].learning_rate");
+    refused(R"([{"kind": "cma_mae"}, {"kind": "cma_mae", "threshold_min": -5}])", "same learning_rate and threshold_min");
+}

@@ -384,3 +384,60 @@ TEST_CASE("a MAP-Elites run begun before lineage.csv had descriptor columns resu
     CHECK(lines_of(read_text(old / "lineage.csv")).back().find(',') != std::string::npos);
     CHECK(cells_of(lines_of(read_text(old / "lineage.csv")).back()).size() == 5);
 }
+
+TEST_CASE("MAP-Elites with CMA-ME and CMA-MAE emitters: the same files for any threads and after a resume; "
+          "a damaged emitter state is refused",
+          "[app][map_elites][emitters][checkpoint]") {
+    TempDir tmp("me-cma");
+    nlohmann::json config = nlohmann::json::parse(me_config(5));
+    config["evolution"].erase("batch");  // the pipeline (lag 64 > a generation of 12)
+    config["emitters"] = nlohmann::json::parse(R"([{"kind": "cma_me", "share": 1, "sigma0": 0.2},
+        {"kind": "cma_mae", "share": 2, "sigma0": 0.3, "learning_rate": 0.2, "threshold_min": -1},
+        {"kind": "iso_line", "share": 1}])");
+    write_text(tmp.path / "me.json", config.dump());
+    const std::string path = (tmp.path / "me.json").string();
+    REQUIRE(run_morphogen("evolve " + path + " --out " + (tmp.path / "one").string() + " --threads 1").code == 0);
+    REQUIRE(run_morphogen("evolve " + path + " --out " + (tmp.path / "two").string() + " --threads 2").code == 0);
+    check_same_elite_runs(tmp.path / "one", tmp.path / "two");
+    const fs::path split = tmp.path / "split";
+    REQUIRE(run_morphogen("evolve " + path + " --out " + split.string() + " --threads 2 --generations 2").code == 0);
+    const fs::path damaged = tmp.path / "damaged";
+    fs::copy(split, damaged, fs::copy_options::recursive);
+    const std::string original = read_text(damaged / "checkpoint.json");
+    REQUIRE(run_morphogen("resume " + split.string() + " --generations 5 --threads 1").code == 0);
+    check_same_elite_runs(tmp.path / "one", split);
+
+    // The state at generation 2: every CMA emitter started, thresholds kept.
+    const nlohmann::json content = checkpoint_content(original, "test");
+    const nlohmann::json& emitters = content["map_elites"]["emitters"];
+    REQUIRE(emitters.size() == 3);
+    CHECK(emitters[0].is_object());
+    CHECK(emitters[1].is_object());
+    CHECK(emitters[2].is_null());
+    CHECK(emitters[1]["mean"]["params"].size() == content["map_elites"]["best"]["params"].size());
+    const std::vector<std::pair<std::string, std::function<void(nlohmann::json&)>>> edits = {
+        {"map_elites.emitters[1].sigma", [](nlohmann::json& c) { c["map_elites"]["emitters"][1]["sigma"] = 0.0; }},
+        {"map_elites.emitters[0].children", [](nlohmann::json& c) {
+             c["map_elites"]["emitters"][0]["children"].push_back(c["map_elites"]["emitters"][0]["mean"]);
+         }},
+        {"map_elites.emitters[1].variances", [](nlohmann::json& c) {
+             c["map_elites"]["emitters"][1]["variances"]["params"][0] = -1.0;
+         }},
+        {"map_elites.emitters[2]", [](nlohmann::json& c) {
+             c["map_elites"]["emitters"][2] = c["map_elites"]["emitters"][1];
+         }},
+    };
+    for (const auto& [expected, edit] : edits) {
+        INFO(expected);
+        nlohmann::json changed = content;
+        edit(changed);
+        const std::string text = checkpoint_text(changed);
+        write_text(damaged / "checkpoint.json", text);
+        const CliResult result = run_morphogen("resume " + damaged.string() + " --generations 6");
+        CHECK(result.code == 5);
+        CHECK_THAT(result.output, Catch::Contains(expected));
+        CHECK(read_text(damaged / "checkpoint.json") == text);  // untouched
+    }
+    write_text(damaged / "checkpoint.json", original);
+    CHECK(run_morphogen("resume " + damaged.string() + " --generations 3").code == 0);
+}
