@@ -37,7 +37,7 @@ void check_same_experiment(const nlohmann::json& checkpoint_config, const nlohma
                            const std::string& file) {
     auto deciding = [](const nlohmann::json& c) {
         nlohmann::json out = nlohmann::json::object();
-        for (const char* section : {"network", "growth", "fitness", "evolution", "descriptors", "archive"})
+        for (const char* section : {"network", "growth", "fitness", "evolution", "descriptors", "archive", "emitters"})
             out[section] = c.is_object() && c.contains(section) ? c[section] : nlohmann::json();
         out["run"]["seed"] = c.is_object() && c.contains("run") && c["run"].is_object() && c["run"].contains("seed")
                                  ? c["run"]["seed"]

@@ -439,5 +439,14 @@ TEST_CASE("MAP-Elites with CMA-ME and CMA-MAE emitters: the same files for any t
         CHECK(read_text(damaged / "checkpoint.json") == text);  // untouched
     }
     write_text(damaged / "checkpoint.json", original);
+    // Changing the emitters between sessions is refused, naming them.
+    const std::string config_text = read_text(damaged / "config.json");
+    nlohmann::json edited = nlohmann::json::parse(config_text);
+    edited["emitters"][0]["sigma0"] = 0.25;
+    write_text(damaged / "config.json", edited.dump());
+    const CliResult changed = run_morphogen("resume " + damaged.string() + " --generations 3");
+    CHECK(changed.code == 5);
+    CHECK_THAT(changed.output, Catch::Contains("emitters.0.sigma0 differs"));
+    write_text(damaged / "config.json", config_text);
     CHECK(run_morphogen("resume " + damaged.string() + " --generations 3").code == 0);
 }
