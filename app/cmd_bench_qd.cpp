@@ -5,15 +5,20 @@
 // grid, n = 100, sigma 0.5; MAP-Elites (gaussian on every parameter),
 // MAP-Elites (line) (iso_line 0.5 / 0.2), CMA-ME (15 cma_me emitters of 36,
 // mu parents, basic restarts: the paper's baseline) and CMA-MAE (15 cma_mae
-// emitters of 36, alpha 0.01, threshold_min 0). Generation 0 (540 random
+// emitters of 36, alpha 0.01, threshold_min 0); also cma_me_imp (CMA-ME with
+// filter parents and no_improvement restarts, as Fontaine et al. 2020 first
+// ran it and our cma_me's defaults). Generation 0 (540 random
 // genomes, uniform in [-1, 1)) is part of the budget. Prints the QD-score as
 // the paper normalises it (the sum of the elites' objectives / cells), the
 // coverage, the best objective, and the time per birth of the whole loop (an
 // upper bound on an emitter's own cost per birth).
 #include "app/commands.hpp"
 #include "evolution/map_elites.hpp"
+#include "evolution/sep_cma.hpp"
 #include "evolution/sphere_projection.hpp"
 
+#include <Eigen/Dense>
+#include <Eigen/Eigenvalues>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
@@ -33,6 +38,7 @@ struct BenchQdOptions {
     int seeds = 1;
     std::uint64_t seed = 1;
     bool json = false;
+    std::size_t covariance_cost = 0;  // > 0: time the covariance models at this n instead
 };
 
 constexpr int kPerIteration = 540, kCmaEmitters = 15;
@@ -53,11 +59,13 @@ MapElitesParams params_for(const std::string& algorithm) {
         e.sigma_iso = 0.5;
         e.sigma_line = 0.2;
         p.emitters = {e};
-    } else if (algorithm == "cma_me" || algorithm == "cma_mae") {
-        e.kind = algorithm == "cma_me" ? EmitterKind::cma_me : EmitterKind::cma_mae;
+    } else if (algorithm == "cma_me" || algorithm == "cma_mae" || algorithm == "cma_me_imp") {
+        e.kind = algorithm == "cma_mae" ? EmitterKind::cma_mae : EmitterKind::cma_me;
         e.sigma0 = 0.5;
-        e.parents = CmaParents::mu;
-        e.restart = CmaRestart::basic;
+        // cma_me_imp: filter and no_improvement, the original CMA-ME (our cma_me's defaults).
+        const bool original = algorithm == "cma_me_imp";
+        e.parents = original ? CmaParents::filter : CmaParents::mu;
+        e.restart = original ? CmaRestart::no_improvement : CmaRestart::basic;
         e.learning_rate = 0.01;
         e.threshold_min = 0.0;
         p.emitters.assign(kCmaEmitters, e);
@@ -98,7 +106,63 @@ double mean_of(const std::vector<QdRun>& runs, double QdRun::*field) {
     return sum / static_cast<double>(runs.size());
 }
 
+// What one birth's sampling and one update cost with a diagonal covariance
+// (sep-CMA-ES, ours) and with a full one (an n x n matrix-vector product per
+// sample and an eigendecomposition per update, as full CMA-ES does), at n
+// parameters: the measurement behind docs/algorithm.md §9.9's choice.
+int run_covariance_cost(const BenchQdOptions& o) {
+    const std::size_t n = o.covariance_cost;
+    const int lambda = 25, samples = 200;
+    auto seconds = [](auto&& work) {
+        const auto start = std::chrono::steady_clock::now();
+        work();
+        return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    };
+    RandomStream stream(o.seed, 0);
+    SepCmaState diagonal = sep_cma_start(std::vector<double>(n, 0.1), 0.1);
+    std::vector<std::vector<double>> children;
+    const double diag_sample = seconds([&] {
+        for (int k = 0; k < samples; ++k) children.push_back(sep_cma_sample(diagonal, stream));
+    }) / samples;
+    std::vector<const std::vector<double>*> parents;
+    for (int k = 0; k < lambda / 2; ++k) parents.push_back(&children[static_cast<std::size_t>(k)]);
+    const double diag_update = seconds([&] { sep_cma_update(diagonal, parents); });
+
+    Eigen::MatrixXd a = Eigen::MatrixXd::Random(static_cast<Eigen::Index>(n), static_cast<Eigen::Index>(n));
+    const Eigen::MatrixXd c = a * a.transpose() / static_cast<double>(n) + Eigen::MatrixXd::Identity(a.rows(), a.cols());
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen;
+    const double full_eigen = seconds([&] { eigen.compute(c); });
+    const Eigen::MatrixXd bd = eigen.eigenvectors() * eigen.eigenvalues().cwiseSqrt().asDiagonal();
+    Eigen::VectorXd z = Eigen::VectorXd::Random(a.rows()), x(a.rows());
+    const double full_sample = seconds([&] {
+        for (int k = 0; k < samples; ++k) {
+            x.noalias() = bd * z;
+            z[k % z.size()] += x[0] * 1e-300;  // keep the product live
+        }
+    }) / samples;
+    Eigen::MatrixXd update = c;
+    const double full_rank_mu = seconds([&] {
+        for (int k = 0; k < lambda / 2; ++k) update.noalias() += 0.01 * (x * x.transpose());
+    });
+    const nlohmann::json report{{"n", n},
+                                {"diagonal_sample_ms", 1e3 * diag_sample},
+                                {"diagonal_update_ms", 1e3 * diag_update},
+                                {"full_sample_ms", 1e3 * full_sample},
+                                {"full_rank_mu_update_ms", 1e3 * full_rank_mu},
+                                {"full_eigendecomposition_ms", 1e3 * full_eigen}};
+    if (o.json) {
+        std::printf("%s\n", report.dump(2).c_str());
+    } else {
+        std::printf("n = %zu: diagonal: sample %.4f ms, update (mu = %d) %.4f ms; full: sample %.4f ms, "
+                    "rank-mu update %.2f ms, eigendecomposition %.1f ms\n",
+                    n, 1e3 * diag_sample, lambda / 2, 1e3 * diag_update, 1e3 * full_sample, 1e3 * full_rank_mu,
+                    1e3 * full_eigen);
+    }
+    return 0;
+}
+
 int run_bench_qd(const BenchQdOptions& o) {
+    if (o.covariance_cost > 0) return run_covariance_cost(o);
     nlohmann::json report = nlohmann::json::object();
     report["iterations"] = o.iterations;
     report["births_per_iteration"] = kPerIteration;
@@ -139,8 +203,9 @@ int run_bench_qd(const BenchQdOptions& o) {
 void add_bench_qd_command(CLI::App& root, CommandRunner& selected) {
     auto options = std::make_shared<BenchQdOptions>();
     CLI::App* cmd = root.add_subcommand("bench-qd", "Run the sphere linear-projection QD benchmark (emitters vs the papers)");
-    cmd->add_option("--algorithm", options->algorithms, "map_elites, line, cma_me, cma_mae (default: all four)")
-        ->check(CLI::IsMember({"map_elites", "line", "cma_me", "cma_mae"}));
+    cmd->add_option("--algorithm", options->algorithms,
+                    "map_elites, line, cma_me, cma_mae (default: these four), cma_me_imp (filter, no_improvement)")
+        ->check(CLI::IsMember({"map_elites", "line", "cma_me", "cma_mae", "cma_me_imp"}));
     cmd->add_option("--iterations", options->iterations, "Iterations of 540 births (default 10000, the papers')")
         ->check(CLI::Range(std::uint64_t{1}, std::uint64_t{1000000}));
     cmd->add_option("--dimension", options->dimension, "Parameters n (default 100)")->check(CLI::Range(2, 100000));
@@ -148,6 +213,9 @@ void add_bench_qd_command(CLI::App& root, CommandRunner& selected) {
         ->check(CLI::Range(1, 1000));
     cmd->add_option("--seed", options->seed, "First seed (default 1)");
     cmd->add_flag("--json", options->json, "Print one JSON object");
+    cmd->add_option("--covariance-cost", options->covariance_cost,
+                    "Instead: time sampling and updating a diagonal and a full covariance at N parameters")
+        ->check(CLI::Range(2, 20000));
     select_on_pick(cmd, selected, options, run_bench_qd);
 }
 
