@@ -2,6 +2,7 @@
 
 #include "core/config_reader.hpp"
 #include "fitness/measures.hpp"
+#include "fitness/tree_sections.hpp"
 
 #include <cmath>
 #include <numbers>
@@ -53,6 +54,10 @@ const DescriptorMeasure kMeasures[] = {
      "xy distance between the mean vertex of the top half and of the bottom half"},
     {"sphericity", [](MeshView m, const CanopyParams&) { return mesh_sphericity(m); },
      "pi^(1/3) (6 |volume|)^(2/3) / area: 1 for a sphere, small for thin branches"},
+    {"trunk_ratio", [](MeshView m, const CanopyParams&) { return tree_sections(m).trunk_ratio; },
+     "widest section of the lowest quarter / widest of the upper half (a tree: <= 0.25)"},
+    {"upper_loops", [](MeshView m, const CanopyParams&) { return static_cast<double>(tree_sections(m).upper_loops); },
+     "most loops of a horizontal section in the upper half (branches: >= 3)"},
 };
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include "fitness/cgal_geometry.hpp"
 #include "fitness/light.hpp"
 #include "fitness/measures.hpp"
+#include "fitness/tree_sections.hpp"
 
 #include <utility>
 
@@ -99,6 +100,8 @@ std::unique_ptr<FitnessFunction> read_light(ObjectReader& reader) {
 double vertex_count(MeshView mesh) { return static_cast<double>(mesh.positions.size()); }
 double face_count(MeshView mesh) { return static_cast<double>(mesh.faces.size()); }
 double self_intersecting(MeshView mesh) { return mesh_self_intersects(mesh) ? 1.0 : 0.0; }
+double trunk_ratio(MeshView mesh) { return tree_sections(mesh).trunk_ratio; }
+double upper_loops(MeshView mesh) { return static_cast<double>(tree_sections(mesh).upper_loops); }
 
 std::unique_ptr<FitnessFunction> read_sum(ObjectReader& reader);
 
@@ -121,6 +124,8 @@ const TypeEntry kTypes[] = {
     {"vertices", nullptr, vertex_count},
     {"faces", nullptr, face_count},
     {"self_intersecting", nullptr, self_intersecting},
+    {"trunk_ratio", nullptr, trunk_ratio},
+    {"upper_loops", nullptr, upper_loops},
 };
 
 struct ReadResult {

@@ -297,5 +297,27 @@ class CsvAndSelfIntersectionTest(TempDirTest):
         self.assertEqual(done.stdout.splitlines()[1].split(",")[7], "false")
 
 
+    @unittest.skipUnless(os.access(MORPHOGEN, os.X_OK), f"{MORPHOGEN} is not built")
+    def test_the_executables_tree_measures_agree_on_grown_meshes(self):
+        # fitness/tree_sections.cpp (as the fitness types trunk_ratio and
+        # upper_loops) and this script, on random genomes grown by morphogen.
+        configs = {}
+        for measure in ("trunk_ratio", "upper_loops"):
+            configs[measure] = self.write(f"{measure}.json", json.dumps({"fitness": {"type": measure}}))
+        for genome in (1, 2, 5, 9):
+            path = self.dir / f"grown-{genome}.obj"
+            subprocess.run([str(MORPHOGEN), "grow", "--random", str(genome), "-o", str(path)],
+                           check=True, capture_output=True)
+            (r,), _ = self.json_records(path, morphogen=None)
+            scored = {}
+            for measure, config in configs.items():
+                done = subprocess.run([str(MORPHOGEN), "score", "--mesh", str(path), "--config", str(config), "--json"],
+                                      check=True, capture_output=True, text=True)
+                scored[measure] = json.loads(done.stdout)["fitness"]
+            with self.subTest(genome=genome):
+                self.assertEqual(scored["upper_loops"], r["max_loops_upper_half"])
+                self.assertAlmostEqual(scored["trunk_ratio"], r["trunk_ratio"], places=12)
+
+
 if __name__ == "__main__":
     unittest.main()
