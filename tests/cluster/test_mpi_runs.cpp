@@ -6,6 +6,7 @@
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <fcntl.h>
 #include <signal.h>
@@ -179,6 +180,19 @@ TEST_CASE("a MAP-Elites run over 1, 2, 3 and 5 processes gives the plain run's f
         REQUIRE(r.code == 0);
         check_same_dirs(tmp.path / "plain", dir);
     }
+    // With CMA emitters (their distributions change at insertions on rank 0).
+    nlohmann::json with_cma = nlohmann::json::parse(elite_config(5));
+    with_cma["emitters"] = nlohmann::json::parse(R"([{"kind": "cma_me", "sigma0": 0.2},
+        {"kind": "cma_mae", "sigma0": 0.3, "learning_rate": 0.2, "threshold_min": -1}, {"kind": "iso_line"}])");
+    const fs::path cma_config = tmp.path / "cma.json";
+    write_text(cma_config, with_cma.dump());
+    REQUIRE(run_morphogen("evolve " + q(cma_config) + " --out " + q(tmp.path / "cma-plain")).code == 0);
+    const CliResult r = run_shell(mpirun(3) + "evolve " + q(cma_config) + " --out " + q(tmp.path / "cma-np3"),
+                                  tmp.path / "log");
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    check_same_dirs(tmp.path / "cma-plain", tmp.path / "cma-np3");
+    CHECK(read_text(tmp.path / "cma-plain" / "archive.csv") != read_text(tmp.path / "plain" / "archive.csv"));
 }
 
 TEST_CASE("stopped with one number of processes, resumed with another: the uninterrupted run's files",
