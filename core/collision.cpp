@@ -32,7 +32,9 @@ void CollisionGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before)
     swept_.resize(F);
     boxes_.resize(F);
     double extent_sum = 0.0, extent_max = 0.0;
+    triangles_.resize(F);
     for (int f = 0; f < F; ++f) {
+        triangles_[f] = IndexedTriangle::of(x, faces[f]);
         boxes_[f] = face_box(x, faces[f]);
         swept_[f] = boxes_[f].merged(face_box(before, faces[f]));
         const double extent = (swept_[f].hi - swept_[f].lo).maxCoeff();
@@ -43,8 +45,7 @@ void CollisionGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before)
     // holds a few faces. No box spans more than 17 cells a side.
     double cell = std::max(extent_sum / std::max(F, 1), extent_max / 16.0);
     if (!(cell > 0.0)) cell = 1.0;
-    grid_.reset(cell, 4 * static_cast<std::size_t>(F));
-    for (int f = 0; f < F; ++f) grid_.insert(f, swept_[f]);
+    grid_.build(cell, swept_);
     stamp_.assign(F, 0);
     query_ = 0;
     if (!any) return;
@@ -77,6 +78,7 @@ bool CollisionGuard::find_collisions(const TriMesh& mesh) {
             face_active_[f] = 1;
             active_.push_back(f);
             boxes_[f] = face_box(x, t);
+            triangles_[f] = IndexedTriangle::of(x, t);
         }
     }
     if (active_.empty()) return false;
@@ -87,16 +89,15 @@ bool CollisionGuard::find_collisions(const TriMesh& mesh) {
         found = true;
     };
     for (const int i : active_) {
-        const IndexedTriangle ti = IndexedTriangle::of(x, faces[i]);
+        const IndexedTriangle& ti = triangles_[i];
         if (triangle_degenerate(ti.p[0], ti.p[1], ti.p[2])) mark(faces[i]);
-        grid_.for_each_candidate(swept_[i], [&](const Cell& cell, int j) {
-            // Each pair once: an active pair from its lower face, and only in
-            // the cell holding the low corner of the two boxes' overlap.
-            if (j == i || (face_active_[j] && j < i)) return;
-            if (!swept_[i].overlaps(swept_[j])) return;
-            if (!(grid_.cell_of(swept_[i].lo.cwiseMax(swept_[j].lo)) == cell)) return;
-            if (!boxes_[i].overlaps(boxes_[j])) return;
-            if (faces_intersect(ti, IndexedTriangle::of(x, faces[j]))) {
+        ++query_;
+        const Box3& box = boxes_[i];
+        grid_.for_each_candidate(swept_[i], [&](int j, const Box3& listed) {
+            // Each pair once: two active faces from the lower one. The listed
+            // (swept) box holds j's box now: most candidates end at the first test.
+            if (!listed.overlaps(box) || j == i || (face_active_[j] && j < i) || !first_visit(j)) return;
+            if (box.overlaps(boxes_[j]) && faces_intersect(ti, triangles_[j])) {
                 mark(faces[i]);
                 mark(faces[j]);
             }
@@ -128,9 +129,9 @@ bool CollisionGuard::allows_untimed(const TriMesh& mesh, int f, int g, const Fac
         const Box3 box = Box3::of(t->p[0], t->p[1], t->p[2]);
         ++query_;
         bool hit = false;
-        grid_.for_each_candidate(box, [&](const Cell&, int j) {
-            if (hit || j == f || j == g || stamp_[j] == query_) return;
-            stamp_[j] = query_;
+        grid_.for_each_candidate(box, [&](int j, const Box3& listed) {
+            // A stale listing (j changed since) may fail here; j's newer one follows.
+            if (hit || !listed.overlaps(box) || j == f || j == g || !first_visit(j)) return;
             const IndexedTriangle tj = IndexedTriangle::of(x, mesh.face(j));
             if (box.overlaps(Box3::of(tj.p[0], tj.p[1], tj.p[2])) && faces_intersect(*t, tj)) hit = true;
         });

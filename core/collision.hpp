@@ -50,6 +50,7 @@ private:
     SpatialHash grid_;
     std::vector<Box3> swept_;        // per face: its box before and after the move
     std::vector<Box3> boxes_;        // per face: its box now
+    std::vector<IndexedTriangle> triangles_;  // per face: as it is now
     std::vector<double> scale_;      // per vertex: the fraction of its step it takes
     std::vector<Vec3> proposed_;     // per vertex: where the move wanted it
     std::vector<char> changed_;      // per vertex: moved since the last check
@@ -58,6 +59,12 @@ private:
     std::vector<int> active_;
     std::vector<std::uint32_t> stamp_;  // per face: the last query that tested it
     std::uint32_t query_ = 0;
+    // Each query's own stamp: candidates repeat (a face lies in several cells).
+    bool first_visit(int face) {
+        if (stamp_[face] == query_) return false;
+        stamp_[face] = query_;
+        return true;
+    }
 };
 
 }  // namespace morphogen

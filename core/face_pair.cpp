@@ -5,6 +5,7 @@
 // error bounds. Whatever it cannot prove goes to the exact predicates.
 #include "core/face_pair.hpp"
 
+#include <initializer_list>
 #include <limits>
 
 namespace morphogen {
@@ -69,27 +70,64 @@ bool disjoint_proven(const Corners& a, const Corners& b) {
     return false;
 }
 
+Vec3 unit(const Vec3& v) {
+    const double length = v.norm();
+    return length > 0.0 ? Vec3(v / length) : v;
+}
+
 // One shared vertex at the origin; (a1, a2) and (b1, b2) the other corners.
+// Proven if a line through the origin in the mean plane, along the bisector
+// of a gap between the two fans' edges, parts them (nearly flat fans, which
+// no face's plane parts).
 bool touch_only_proven(const Vec3& a1, const Vec3& a2, const Vec3& b1, const Vec3& b2) {
-    const Vec3 na = a1.cross(a2), nb = b1.cross(b2);
-    for (const Vec3& axis : {na, nb, na.cross(a1), na.cross(a2), nb.cross(b1), nb.cross(b2), a1.cross(b1),
-                             a1.cross(b2), a2.cross(b1), a2.cross(b2)})
-        if (apart_at_origin(axis, a1, a2, b1, b2)) return true;
+    const Vec3 normal = unit(a1.cross(a2)) + unit(b1.cross(b2));
+    const Vec3 ua1 = unit(a1), ua2 = unit(a2), ub1 = unit(b1), ub2 = unit(b2);
+    for (const Vec3 gap : {ua2 + ub1, ua1 + ub2, ua1 + ub1, ua2 + ub2})
+        if (apart_at_origin(normal.cross(gap), a1, a2, b1, b2)) return true;
     return false;
 }
 
-// Edge p-q shared: proven not coplanar (the orient3d filter, Shewchuk's
-// bound (7 + 56 eps) eps of the permanent, rounded up to 1e-15).
-bool not_coplanar_proven(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s) {
-    const Vec3 u = q - p, v = r - p, w = s - p;
-    const double det = w.dot(u.cross(v));
-    const Vec3 ua = u.cwiseAbs(), va = v.cwiseAbs();
-    const Vec3 permanent_cross(ua.y() * va.z() + ua.z() * va.y(), ua.z() * va.x() + ua.x() * va.z(),
-                               ua.x() * va.y() + ua.y() * va.x());
-    return std::abs(det) > 1e-15 * w.cwiseAbs().dot(permanent_cross);
+// Edge p-q shared, r and s the third corners (all relative to p): proven
+// not to fold onto each other because r and s lie on opposite sides of the
+// edge in the faces' mean plane (for nearly coplanar faces).
+bool no_fold_proven(const Vec3& q, const Vec3& r, const Vec3& s) {
+    const Vec3 across = (unit(q.cross(r)) + unit(s.cross(q))).cross(q);
+    Interval ir, is;
+    ir.add(across, r);
+    is.add(across, s);
+    return (ir.hi < 0.0 && is.lo > 0.0) || (is.hi < 0.0 && ir.lo > 0.0);
+}
+
+// The proven side of `point` relative to t's plane (orient3d against its
+// corners), or 0 if the filter cannot tell.
+int plane_side(const IndexedTriangle& t, const Vec3& point) {
+    const Vec3 w = point - t.p[0];
+    const double det = w.dot(t.normal), bound = 1e-15 * w.cwiseAbs().dot(t.normal_abs);
+    return det > bound ? 1 : det < -bound ? -1 : 0;
+}
+
+// Proven: these corners of `b` lie strictly on one side of a's plane.
+bool beside_plane(const IndexedTriangle& a, std::initializer_list<const Vec3*> corners) {
+    int side = 0;
+    for (const Vec3* c : corners) {
+        const int s = plane_side(a, *c);
+        if (s == 0 || (side != 0 && s != side)) return false;
+        side = s;
+    }
+    return true;
 }
 
 }  // namespace
+
+IndexedTriangle IndexedTriangle::of(const std::vector<Vec3>& positions, const Face& f) {
+    IndexedTriangle t{f, {positions[f[0]], positions[f[1]], positions[f[2]]}, {}, {}};
+    const Vec3 u = t.p[1] - t.p[0], v = t.p[2] - t.p[0];
+    t.normal = u.cross(v);
+    const Vec3 ua = u.cwiseAbs(), va = v.cwiseAbs();
+    t.normal_abs = Vec3(ua.y() * va.z() + ua.z() * va.y(), ua.z() * va.x() + ua.x() * va.z(),
+                        ua.x() * va.y() + ua.y() * va.x());
+    return t;
+}
 
 bool triangle_degenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
     // A component of the cross product clearly nonzero proves a, b, c are not collinear.
@@ -119,6 +157,8 @@ bool faces_intersect(const IndexedTriangle& a, const IndexedTriangle& b) {
         return triangle_degenerate(a.p[0], a.p[1], a.p[2]) || triangle_degenerate(b.p[0], b.p[1], b.p[2]);
     };
     if (shared == 0) {
+        if (beside_plane(a, {&b.p[0], &b.p[1], &b.p[2]}) || beside_plane(b, {&a.p[0], &a.p[1], &a.p[2]}))
+            return false;
         const Vec3& o = a.p[0];
         const Corners ra{Vec3::Zero(), a.p[1] - o, a.p[2] - o}, rb{b.p[0] - o, b.p[1] - o, b.p[2] - o};
         return !disjoint_proven(ra, rb) && (degenerate() || exact::triangles_intersect(a.p, b.p));
@@ -127,6 +167,7 @@ bool faces_intersect(const IndexedTriangle& a, const IndexedTriangle& b) {
         const int i = ia[0] >= 0 ? 0 : ia[1] >= 0 ? 1 : 2, j = ia[i];
         const Vec3& v = a.p[i];
         const Vec3 &a1 = a.p[(i + 1) % 3], &a2 = a.p[(i + 2) % 3], &b1 = b.p[(j + 1) % 3], &b2 = b.p[(j + 2) % 3];
+        if (beside_plane(a, {&b1, &b2}) || beside_plane(b, {&a1, &a2})) return false;
         if (touch_only_proven(a1 - v, a2 - v, b1 - v, b2 - v)) return false;
         return degenerate() || exact::shared_vertex_pair_intersects(v, a1, a2, b1, b2);
     }
@@ -135,7 +176,7 @@ bool faces_intersect(const IndexedTriangle& a, const IndexedTriangle& b) {
         int s = 0;
         while (b.v[s] == a.v[(r + 1) % 3] || b.v[s] == a.v[(r + 2) % 3]) ++s;
         const Vec3 &p = a.p[(r + 1) % 3], &q = a.p[(r + 2) % 3];
-        if (not_coplanar_proven(p, q, a.p[r], b.p[s])) return false;
+        if (plane_side(a, b.p[s]) != 0 || no_fold_proven(q - p, a.p[r] - p, b.p[s] - p)) return false;
         return degenerate() || exact::shared_edge_pair_folds(p, q, a.p[r], b.p[s]);
     }
     return false;  // the same face

@@ -18,13 +18,14 @@
 
 namespace morphogen {
 
-// A triangle by vertex indices (to find shared vertices) and corner positions.
+// A triangle by vertex indices (to find shared vertices), corner positions,
+// and its plane for the filter: normal = (p1 - p0) x (p2 - p0) as rounded,
+// normal_abs the same products taken in absolute value (its error scale).
 struct IndexedTriangle {
     Face v;
     std::array<Vec3, 3> p;
-    static IndexedTriangle of(const std::vector<Vec3>& positions, const Face& f) {
-        return {f, {positions[f[0]], positions[f[1]], positions[f[2]]}};
-    }
+    Vec3 normal, normal_abs;
+    static IndexedTriangle of(const std::vector<Vec3>& positions, const Face& f);
 };
 
 // The rule above for two different triangles (they may share 0, 1 or 2

@@ -1,27 +1,33 @@
 #include "core/spatial_hash.hpp"
 
+#include <algorithm>
 #include <bit>
 
 namespace morphogen {
 
-void SpatialHash::reset(double cell_size, std::size_t expected_entries) {
+void SpatialHash::build(double cell_size, const std::vector<Box3>& boxes) {
     inverse_cell_ = 1.0 / cell_size;
-    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * expected_entries, 64));
-    if (buckets > head_.size()) head_.resize(buckets);
-    mask_ = head_.size() - 1;
-    std::fill(head_.begin(), head_.end(), -1);
-    entries_.clear();
+    // About as many buckets as entries (a face lies in a few cells).
+    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(4 * boxes.size(), 64));
+    mask_ = buckets - 1;
+    // Counting sort by bucket: count, prefix sums, fill.
+    start_.assign(buckets + 1, 0);
+    for (const Box3& box : boxes) for_each_cell(box, [&](std::size_t b) { ++start_[b + 1]; });
+    for (std::size_t b = 0; b < buckets; ++b) start_[b + 1] += start_[b];
+    entries_.resize(start_[buckets]);
+    std::vector<std::size_t>& next = fill_cursor_;
+    next.assign(start_.begin(), start_.end() - 1);
+    for (std::size_t i = 0; i < boxes.size(); ++i)
+        for_each_cell(boxes[i], [&](std::size_t b) { entries_[next[b]++] = {boxes[i], static_cast<int>(i)}; });
+    late_head_.assign(buckets, -1);
+    late_.clear();
 }
 
 void SpatialHash::insert(int id, const Box3& box) {
-    const Cell lo = cell_of(box.lo), hi = cell_of(box.hi);
-    for (std::int64_t x = lo.x; x <= hi.x; ++x)
-        for (std::int64_t y = lo.y; y <= hi.y; ++y)
-            for (std::int64_t z = lo.z; z <= hi.z; ++z) {
-                const std::size_t b = bucket({x, y, z});
-                entries_.push_back({id, head_[b]});
-                head_[b] = static_cast<int>(entries_.size()) - 1;
-            }
+    for_each_cell(box, [&](std::size_t b) {
+        late_.push_back({box, id, late_head_[b]});
+        late_head_[b] = static_cast<int>(late_.size()) - 1;
+    });
 }
 
 }  // namespace morphogen

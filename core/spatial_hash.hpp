@@ -1,14 +1,14 @@
 #pragma once
 // A uniform grid of axis-aligned boxes, hashed (docs/algorithm.md §5.7): the
 // broad phase of the collision check. Each box is listed in every cell it
-// overlaps; a query visits the cells a box overlaps and reports what is
-// listed there. Entries can be added at any time (a face that changes is
-// simply listed again); nothing is removed until reset(), so a caller must
-// check every candidate against its current box and expect repeats.
-// Deterministic: entries are visited in a fixed order for a fixed history.
+// overlaps, with a copy of the box; a query visits the cells a box overlaps
+// and reports what is listed there. build() lists many boxes at once, each
+// bucket's entries side by side (a query reads them in order, not by
+// pointer); insert() adds one later (a face that changed is listed again).
+// Nothing is removed until the next build(), so a caller must expect stale
+// and repeated entries. Deterministic: a fixed history gives a fixed order.
 #include "core/mesh.hpp"
 
-#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -28,51 +28,59 @@ struct Box3 {
     }
 };
 
-struct Cell {
-    std::int64_t x, y, z;
-    bool operator==(const Cell&) const = default;
-};
-
 class SpatialHash {
 public:
-    // Empties the grid and sets the cell edge (> 0, finite) and the table
-    // size (a power of two >= 2 * expected_entries; kept if already larger).
-    void reset(double cell_size, std::size_t expected_entries);
-    // Lists `id` in every cell `box` overlaps.
+    // Lists boxes[i] as id i, and nothing else; cells of edge `cell_size`
+    // (> 0, finite).
+    void build(double cell_size, const std::vector<Box3>& boxes);
+    // Lists `box` as `id` too.
     void insert(int id, const Box3& box);
 
-    Cell cell_of(const Vec3& p) const { return {coordinate(p.x()), coordinate(p.y()), coordinate(p.z())}; }
-
-    // Calls fn(cell, id) for every entry listed in the buckets of the cells
+    // Calls fn(id, listed_box) for every entry in the buckets of the cells
     // `box` overlaps. A bucket may also hold entries of other cells (hash
-    // collisions) and the same id more than once.
+    // collisions); an id may come more than once, with an older box.
     template <class Fn>
     void for_each_candidate(const Box3& box, Fn&& fn) const {
-        const Cell lo = cell_of(box.lo), hi = cell_of(box.hi);
-        for (std::int64_t x = lo.x; x <= hi.x; ++x)
-            for (std::int64_t y = lo.y; y <= hi.y; ++y)
-                for (std::int64_t z = lo.z; z <= hi.z; ++z) {
-                    const Cell cell{x, y, z};
-                    for (int e = head_[bucket(cell)]; e >= 0; e = entries_[e].next) fn(cell, entries_[e].id);
-                }
+        for_each_cell(box, [&](std::size_t b) {
+            for (std::size_t e = start_[b]; e < start_[b + 1]; ++e) fn(entries_[e].id, entries_[e].box);
+            for (int e = late_head_[b]; e >= 0; e = late_[e].next) fn(late_[e].id, late_[e].box);
+        });
     }
 
 private:
     struct Entry {
+        Box3 box;
+        int id;
+    };
+    struct LateEntry {
+        Box3 box;
         int id, next;
     };
     std::int64_t coordinate(double v) const { return static_cast<std::int64_t>(std::floor(v * inverse_cell_)); }
-    std::size_t bucket(const Cell& c) const {
-        const auto h = static_cast<std::uint64_t>(c.x) * 0x9E3779B97F4A7C15ull ^
-                       static_cast<std::uint64_t>(c.y) * 0xC2B2AE3D27D4EB4Full ^
-                       static_cast<std::uint64_t>(c.z) * 0x165667B19E3779F9ull;
+    // Calls fn(bucket) for each cell `box` overlaps.
+    template <class Fn>
+    void for_each_cell(const Box3& box, Fn&& fn) const {
+        const std::int64_t x0 = coordinate(box.lo.x()), x1 = coordinate(box.hi.x());
+        const std::int64_t y0 = coordinate(box.lo.y()), y1 = coordinate(box.hi.y());
+        const std::int64_t z0 = coordinate(box.lo.z()), z1 = coordinate(box.hi.z());
+        for (std::int64_t x = x0; x <= x1; ++x)
+            for (std::int64_t y = y0; y <= y1; ++y)
+                for (std::int64_t z = z0; z <= z1; ++z) fn(bucket(x, y, z));
+    }
+    std::size_t bucket(std::int64_t x, std::int64_t y, std::int64_t z) const {
+        const auto h = static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^
+                       static_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full ^
+                       static_cast<std::uint64_t>(z) * 0x165667B19E3779F9ull;
         return static_cast<std::size_t>(h >> 32) & mask_;
     }
 
     double inverse_cell_ = 1.0;
     std::size_t mask_ = 0;
-    std::vector<int> head_;  // per bucket: the last entry added, -1 = none
-    std::vector<Entry> entries_;
+    std::vector<std::size_t> start_;  // per bucket + 1: where its entries begin
+    std::vector<Entry> entries_;      // from build(), bucket by bucket
+    std::vector<int> late_head_;      // per bucket: the last insert()ed entry, -1 = none
+    std::vector<LateEntry> late_;
+    std::vector<std::size_t> fill_cursor_;  // build()'s scratch: each bucket's next free slot
 };
 
 }  // namespace morphogen

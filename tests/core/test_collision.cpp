@@ -14,7 +14,13 @@ using namespace morphogen::testing;
 
 namespace {
 
-IndexedTriangle tri(Face v, Vec3 a, Vec3 b, Vec3 c) { return {v, {a, b, c}}; }
+IndexedTriangle tri(Face v, Vec3 a, Vec3 b, Vec3 c) {
+    std::vector<Vec3> positions(static_cast<std::size_t>(std::max({v[0], v[1], v[2]})) + 1);
+    positions[v[0]] = a;
+    positions[v[1]] = b;
+    positions[v[2]] = c;
+    return IndexedTriangle::of(positions, v);
+}
 
 // Every pair of faces by brute force: what the guard must leave at zero.
 int intersecting_pairs(const TriMesh& mesh) {

@@ -51,7 +51,7 @@ Network saturated_genome() {
 
 }  // namespace
 
-TEST_CASE("1,000 random genomes grown with collisions prevented never self-intersect", "[collision]") {
+TEST_CASE("1000 random genomes grown with collisions prevented never self-intersect", "[collision]") {
     // Shorter growth than the default keeps this in the ordinary suite; the
     // default settings run under the CTest label "slow" (below).
     GrowthParams params;
@@ -68,7 +68,7 @@ TEST_CASE("the check can fail: growth that allows collisions self-intersects", "
     CHECK(count_self_intersecting(with(params, Collisions::allow), 1, 250) > 0);
 }
 
-TEST_CASE("hostile genomes: saturated outputs and wide weights, prevented", "[collision]") {
+TEST_CASE("hostile genomes (saturated outputs or wide weights) grown with collisions prevented never self-intersect", "[collision]") {
     const GrowthParams params;  // the paper's defaults: 200 steps, 4000 vertices
     GrowthWorkspace workspace;
     const Network saturated = saturated_genome();
@@ -83,7 +83,7 @@ TEST_CASE("hostile genomes self-intersect when collisions are allowed", "[collis
     CHECK(count_self_intersecting(with(params, Collisions::allow), 1, 20, 20.0) > 0);
 }
 
-TEST_CASE("1,000 random genomes at the default growth settings never self-intersect", "[.][collision-slow]") {
+TEST_CASE("1000 random genomes at the default growth settings never self-intersect", "[.][collision-slow]") {
     const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
     CHECK(count_self_intersecting(with(GrowthParams{}, Collisions::prevent), 1 + 250 * block, 250) == 0);
 }
