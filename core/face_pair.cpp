@@ -27,6 +27,13 @@ struct Interval {
     }
 };
 
+// u x v with every product taken in absolute value: the scale of the
+// rounding error of u x v, component by component.
+Vec3 cross_abs(const Vec3& u, const Vec3& v) {
+    const Vec3 ua = u.cwiseAbs(), va = v.cwiseAbs();
+    return {ua.y() * va.z() + ua.z() * va.y(), ua.z() * va.x() + ua.x() * va.z(), ua.x() * va.y() + ua.y() * va.x()};
+}
+
 // Corners relative to an origin o (rounded once each): keeps the products
 // small where the triangles are far from the coordinate origin.
 using Corners = std::array<Vec3, 3>;
@@ -123,19 +130,15 @@ IndexedTriangle IndexedTriangle::of(const std::vector<Vec3>& positions, const Fa
     IndexedTriangle t{f, {positions[f[0]], positions[f[1]], positions[f[2]]}, {}, {}};
     const Vec3 u = t.p[1] - t.p[0], v = t.p[2] - t.p[0];
     t.normal = u.cross(v);
-    const Vec3 ua = u.cwiseAbs(), va = v.cwiseAbs();
-    t.normal_abs = Vec3(ua.y() * va.z() + ua.z() * va.y(), ua.z() * va.x() + ua.x() * va.z(),
-                        ua.x() * va.y() + ua.y() * va.x());
+    t.normal_abs = cross_abs(u, v);
     return t;
 }
 
 bool triangle_degenerate(const Vec3& a, const Vec3& b, const Vec3& c) {
-    // A component of the cross product clearly nonzero proves a, b, c are not collinear.
+    // A component of the cross product clearly nonzero proves a, b, c are
+    // not collinear (each is a 2x2 determinant: bound 1e-15 of its products).
     const Vec3 u = b - a, v = c - a;
-    const Vec3 cross = u.cross(v);
-    const Vec3 ua = u.cwiseAbs(), va = v.cwiseAbs();
-    const Vec3 bound(ua.y() * va.z() + ua.z() * va.y(), ua.z() * va.x() + ua.x() * va.z(),
-                     ua.x() * va.y() + ua.y() * va.x());
+    const Vec3 cross = u.cross(v), bound = cross_abs(u, v);
     for (int k = 0; k < 3; ++k)
         if (std::abs(cross[k]) > 1e-15 * bound[k]) return false;
     return exact::collinear(a, b, c);
