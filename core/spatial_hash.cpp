@@ -7,8 +7,14 @@ namespace morphogen {
 
 void SpatialHash::build(double cell_size, const std::vector<Box3>& boxes) {
     inverse_cell_ = 1.0 / cell_size;
-    // About as many buckets as entries (a face lies in a few cells).
-    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(4 * boxes.size(), 64));
+    // Twice as many buckets as entries: few cells share a bucket, so a query
+    // reads little beyond its own cells.
+    std::size_t listed = 0;
+    for (const Box3& box : boxes) {
+        const auto span = [&](double lo, double hi) { return static_cast<std::size_t>(coordinate(hi) - coordinate(lo) + 1); };
+        listed += span(box.lo.x(), box.hi.x()) * span(box.lo.y(), box.hi.y()) * span(box.lo.z(), box.hi.z());
+    }
+    const std::size_t buckets = std::bit_ceil(std::max<std::size_t>(2 * listed, 64));
     mask_ = buckets - 1;
     // Counting sort by bucket: count, prefix sums, fill.
     start_.assign(buckets + 1, 0);

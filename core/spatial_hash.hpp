@@ -22,9 +22,11 @@ struct Box3 {
     }
     Box3 merged(const Box3& o) const { return {lo.cwiseMin(o.lo), hi.cwiseMax(o.hi)}; }
     // Closed boxes: touching counts as overlapping (as for CGAL's boxes).
+    // Without short-circuits: the answer is a coin toss for a grid's
+    // candidates, and one branch instead of six mispredicts less.
     bool overlaps(const Box3& o) const {
-        return lo.x() <= o.hi.x() && o.lo.x() <= hi.x() && lo.y() <= o.hi.y() && o.lo.y() <= hi.y() &&
-               lo.z() <= o.hi.z() && o.lo.z() <= hi.z();
+        return (lo.x() <= o.hi.x()) & (o.lo.x() <= hi.x()) & (lo.y() <= o.hi.y()) & (o.lo.y() <= hi.y()) &
+               (lo.z() <= o.hi.z()) & (o.lo.z() <= hi.z());
     }
 };
 
