@@ -135,6 +135,8 @@ int run_bench(const BenchOptions& options) {
         {"move_s", median_of([](const BenchPass& p) { return p.phases.move; })},
         {"split_s", median_of([](const BenchPass& p) { return p.phases.split; })},
         {"flip_s", median_of([](const BenchPass& p) { return p.phases.flip; })},
+        {"collide_s", median_of([](const BenchPass& p) { return p.phases.collide; })},
+        {"collide_fraction", median_of([](const BenchPass& p) { return p.phases.collide / p.phases.total(); })},
         {"think_vertex_steps_per_s", median_of(think_rate)},
         {"think_vertex_steps_per_s_range", range_of(think_rate)},
         {"network_gflops", median_of(think_rate) * flop_per_vertex_step * 1e-9},
@@ -148,8 +150,8 @@ int run_bench(const BenchOptions& options) {
         return 0;
     }
     const double gather = report["gather_s"], move = report["move_s"], split = report["split_s"],
-                 flip = report["flip_s"];
-    const double total = think + gather + move + split + flip;
+                 flip = report["flip_s"], collide = report["collide_s"];
+    const double total = think + gather + move + split + flip + collide;
     std::printf("cpu: %s\n", cpu_model().c_str());
     std::printf("%d genomes x %d steps, layers %s, mean final vertices %.0f; medians of %d passes\n",
                 options.genomes, config.growth.steps, nlohmann::json(layers).dump().c_str(),
@@ -159,9 +161,11 @@ int run_bench(const BenchOptions& options) {
     std::printf("%d threads: %8.3f s  %7.2f genomes/s  %6.2f M vertex-steps/s  (x%.2f, range %.2f-%.2f)\n", threads,
                 wall_all, options.genomes / wall_all, vs / wall_all * 1e-6, report["speedup"].get<double>(),
                 report["speedup_range"][0].get<double>(), report["speedup_range"][1].get<double>());
-    std::printf("phases (1 thread): think %.1f%%  gather %.1f%%  move %.1f%%  split %.1f%%  flip %.1f%%\n",
-                100 * think / total, 100 * gather / total, 100 * move / total, 100 * split / total,
-                100 * flip / total);
+    std::printf("phases (1 thread): think %.1f%%  gather %.1f%%  move %.1f%%  split %.1f%%  flip %.1f%%", 100 * think / total,
+                100 * gather / total, 100 * move / total, 100 * split / total, 100 * flip / total);
+    // Only growth.collisions "prevent" has a collide phase (docs/algorithm.md §5.7).
+    if (config.growth.collisions == Collisions::prevent) std::printf("  collide %.1f%%", 100 * collide / total);
+    std::printf("\n");
     std::printf("think: %.2f M vertex-steps/s (%.1f GFLOP/s)\n", report["think_vertex_steps_per_s"].get<double>() * 1e-6,
                 report["network_gflops"].get<double>());
     std::printf("FMA peak now: %.1f GFLOP/s, so the network bounds growth at %.2f M vertex-steps/s; "

@@ -45,6 +45,7 @@ PhaseTimes& PhaseTimes::operator+=(const PhaseTimes& o) {
     move += o.move;
     split += o.split;
     flip += o.flip;
+    collide += o.collide;
     vertex_steps += o.vertex_steps;
     return *this;
 }
@@ -195,7 +196,7 @@ void Grower::move(GrowthState& state) const {
         for (Vec3& p : x) p.z() = std::max(p.z(), 0.0);
 }
 
-void Grower::split(GrowthState& state, GrowthWorkspace& workspace) const {
+void Grower::split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuard* guard) const {
     TriMesh& mesh = state.mesh;
     const int N = state.outputs_per_vertex;
     const int F0 = mesh.num_faces();
@@ -241,11 +242,19 @@ void Grower::split(GrowthState& state, GrowthWorkspace& workspace) const {
                                3.0;
         mesh.split_face(f, mesh.face_centroid(f));
         state.directions.push_back(direction);
+        if (guard != nullptr)
+            for (const int written : {f, mesh.num_faces() - 2, mesh.num_faces() - 1}) guard->face_changed(mesh, written);
     }
 }
 
-void Grower::flip(GrowthState& state) const {
-    state.mesh.flip_pass(flip_criteria_);
+void Grower::flip(GrowthState& state, FlipGuard* guard) const {
+    if (guard == nullptr) {
+        state.mesh.flip_pass(flip_criteria_);
+        return;
+    }
+    FlipCriteria criteria = flip_criteria_;
+    criteria.guard = guard;
+    state.mesh.flip_pass(criteria);
 }
 
 void Grower::step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times) const {
@@ -262,12 +271,29 @@ void Grower::step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* ti
         times->think -= gather_share * fused;
         times->gather += gather_share * fused;
     }
+    // growth.collisions "prevent" (docs/algorithm.md §5.7): the move is
+    // settled, splits are listed and flips guarded, so no two faces intersect.
+    CollisionGuard* guard = params_.collisions == Collisions::prevent ? &workspace.collision : nullptr;
+    if (guard != nullptr) {
+        workspace.before_move.assign(state.mesh.positions().begin(), state.mesh.positions().end());
+        clock.lap(&PhaseTimes::collide);
+    }
     move(state);
     clock.lap(&PhaseTimes::move);
-    split(state, workspace);
+    if (guard != nullptr) {
+        guard->settle_move(state.mesh, workspace.before_move);
+        clock.lap(&PhaseTimes::collide);
+    }
+    split(state, workspace, guard);
     clock.lap(&PhaseTimes::split);
-    if ((t + 1) % params_.flip_every == 0) flip(state);
+    const double guard_before = guard != nullptr ? guard->flip_seconds : 0.0;
+    if (guard != nullptr) guard->timed = times != nullptr;
+    if ((t + 1) % params_.flip_every == 0) flip(state, guard);
     clock.lap(&PhaseTimes::flip);
+    if (guard != nullptr && times != nullptr) {
+        times->flip -= guard->flip_seconds - guard_before;
+        times->collide += guard->flip_seconds - guard_before;
+    }
     state.steps_done = t + 1;
 }
 

@@ -2,6 +2,7 @@
 // Growth (docs/algorithm.md §4-§5): the network, copied at every vertex, grows a
 // seed mesh step by step: think, move, split, flip. Deterministic: the same
 // network, parameters and seed give the same mesh bit for bit.
+#include "core/collision.hpp"
 #include "core/growth_params.hpp"
 #include "core/mesh.hpp"
 #include "core/network.hpp"
@@ -30,8 +31,9 @@ struct GrowthState {
 // Seconds spent in each phase (accumulated over calls).
 struct PhaseTimes {
     double gather = 0, think = 0, move = 0, split = 0, flip = 0;
+    double collide = 0;  // growth.collisions "prevent" (§5.7): settling moves, guarding flips
     std::uint64_t vertex_steps = 0;  // sum over steps of the vertices that thought
-    double total() const { return gather + think + move + split + flip; }
+    double total() const { return gather + think + move + split + flip + collide; }
     PhaseTimes& operator+=(const PhaseTimes& o);
 };
 
@@ -43,6 +45,9 @@ struct GrowthWorkspace {
     std::vector<int> neighbour_offsets, neighbours, cursor;  // CSR neighbour lists
     std::vector<double> split_w1;                            // w[1] of each vertex
     NetworkWorkspace network;
+    // growth.collisions "prevent" only: positions before the move, the guard.
+    std::vector<Vec3> before_move;
+    CollisionGuard collision;
 };
 
 // Called after every step with the step index t; for tests and animation.
@@ -69,8 +74,9 @@ private:
     // sample of its blocks (else 0).
     double think(GrowthState& state, GrowthWorkspace& workspace, bool timed) const;
     void move(GrowthState& state) const;
-    void split(GrowthState& state, GrowthWorkspace& workspace) const;
-    void flip(GrowthState& state) const;
+    // With a guard, every face a split writes is reported to it (§5.7).
+    void split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuard* guard) const;
+    void flip(GrowthState& state, FlipGuard* guard) const;
 
     const Network& network_;
     GrowthParams params_;

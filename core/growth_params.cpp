@@ -34,6 +34,8 @@ GrowthParams read_growth_params(ObjectReader& reader) {
     // Beyond these the seed's area-weighted normals (products of two
     // coordinates) overflow or vanish; the mesh files' own bound is 1e9.
     p.seed_radius = reader.number("seed_radius", p.seed_radius, kMinSeedRadius, kMaxSeedRadius);
+    p.collisions = reader.choice("collisions", "allow", {"allow", "prevent"}) == "prevent" ? Collisions::prevent
+                                                                                       : Collisions::allow;
     if (p.seed_mesh.empty()) reader.issues().add(reader.path_of("seed_mesh"), "must name a built-in seed or a mesh file");
     reader.finish();
     return p;

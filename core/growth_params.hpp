@@ -18,6 +18,10 @@ struct NetworkParams {
 inline constexpr double kMinSeedRadius = 1e-6;
 inline constexpr double kMaxSeedRadius = 1e6;
 
+// growth.collisions (docs/algorithm.md §5.7): whether a step may make the
+// surface pass through itself.
+enum class Collisions { allow, prevent };
+
 struct GrowthParams {
     int steps = 200;
     double speed = 0.2;
@@ -31,6 +35,7 @@ struct GrowthParams {
     double height_scale = 10.0;
     std::string seed_mesh = "icosahedron";  // built-in name or a mesh file path
     double seed_radius = 1.0;  // in [kMinSeedRadius, kMaxSeedRadius]
+    Collisions collisions = Collisions::allow;
 };
 
 // Read a section; problems are added to reader.issues(), defaults fill gaps.

@@ -165,6 +165,7 @@ bool TriMesh::try_flip(int f, int e, const FlipCriteria& criteria) {
     if (!((pb - pa).cross(pc - pa).dot(n_sum) > 0.0)) return false;
     if (!((pd - pc).cross(pa - pc).dot(n_sum) > 0.0)) return false;
     if (A == C || adjacent(A, C)) return false;
+    if (criteria.guard != nullptr && !criteria.guard->allows(*this, f, g, {A, B, C}, {C, D, A})) return false;
 
     // Partners of the four outer edges before the faces are rewritten.
     const int o_ab = opposite_[3 * f + (e + 2) % 3];    // A->B in f

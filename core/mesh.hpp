@@ -38,10 +38,22 @@ struct MeshArrays {
     MeshView view() const { return {positions, faces}; }
 };
 
+class TriMesh;
+
+// A rule from outside the mesh that may refuse a flip every criterion of
+// docs/algorithm.md §5.4 allows (growth.collisions "prevent", §5.7).
+class FlipGuard {
+public:
+    virtual ~FlipGuard() = default;
+    // Asked last: true means faces f and g are now rewritten to new_f, new_g.
+    virtual bool allows(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g) = 0;
+};
+
 // The conditions of docs/algorithm.md §5.4 under which an edge flip is taken.
 struct FlipCriteria {
     double min_normal_dot = 0.8660254037844387;  // cos(flip_max_angle_deg)
     int min_valence = 4;                          // both B and D need valence > this
+    FlipGuard* guard = nullptr;                   // none: every criterion met flips
 };
 
 class TriMesh {

@@ -30,7 +30,16 @@ TEST_CASE("defaults fill an empty section and are recorded", "[config]") {
     CHECK(p.steps == 200);
     CHECK(reader.resolved()["split_area"] == 0.75);
     CHECK(reader.resolved()["seed_mesh"] == "icosahedron");
-    CHECK(reader.resolved().size() == 12);
+    CHECK(reader.resolved()["collisions"] == "allow");
+    CHECK(p.collisions == Collisions::allow);
+    CHECK(reader.resolved().size() == 13);
+}
+
+TEST_CASE("growth.collisions is allow or prevent", "[config]") {
+    GrowthParams p;
+    CHECK(read_growth(json::parse(R"({"collisions": "prevent"})"), &p).empty());
+    CHECK(p.collisions == Collisions::prevent);
+    CHECK(has_issue(read_growth(json::parse(R"({"collisions": "forbid"})")), "growth.collisions", "forbid"));
 }
 
 TEST_CASE("every problem is reported at once with its key path", "[config]") {
