@@ -126,3 +126,24 @@ TEST_CASE("grown with collisions prevented, no two faces intersect", "[collision
         CHECK(intersecting_pairs(state.mesh) == 0);
     }
 }
+
+TEST_CASE("growth with collisions prevented is deterministic, whatever the workspace has grown before",
+          "[collision]") {
+    GrowthParams params;
+    params.steps = 60;
+    params.collisions = Collisions::prevent;
+    const Seed seed = make_seed("icosahedron", 1.0);
+    GrowthWorkspace shared;
+    for (std::uint64_t g = 1; g <= 5; ++g) {
+        INFO("genome " << g);
+        const Network network(random_test_genome({45, 30, 15}, g));
+        GrowthWorkspace fresh;
+        PhaseTimes times;
+        const GrowthState a = Grower(network, params).grow(seed, shared);
+        const GrowthState b = Grower(network, params).grow(seed, fresh, &times);  // timed
+        CHECK(a.mesh.faces() == b.mesh.faces());
+        CHECK(a.mesh.positions() == b.mesh.positions());
+        CHECK(a.outputs == b.outputs);
+        CHECK(times.collide > 0.0);
+    }
+}
