@@ -36,6 +36,9 @@ GrowthParams read_growth_params(ObjectReader& reader) {
     p.seed_radius = reader.number("seed_radius", p.seed_radius, kMinSeedRadius, kMaxSeedRadius);
     p.collisions = reader.choice("collisions", "allow", {"allow", "prevent"}) == "prevent" ? Collisions::prevent
                                                                                        : Collisions::allow;
+    // The default is not recorded: a config resolves to the same bytes as
+    // before the key existed, so checkpoints written then still resume.
+    if (p.collisions == Collisions::allow) reader.drop_resolved("collisions");
     if (p.seed_mesh.empty()) reader.issues().add(reader.path_of("seed_mesh"), "must name a built-in seed or a mesh file");
     reader.finish();
     return p;

@@ -9,6 +9,7 @@
 // and repeated entries. Deterministic: a fixed history gives a fixed order.
 #include "core/mesh.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -58,7 +59,11 @@ private:
         Box3 box;
         int id, next;
     };
-    std::int64_t coordinate(double v) const { return static_cast<std::int64_t>(std::floor(v * inverse_cell_)); }
+    // Clamped: a huge coordinate over a tiny cell would overflow the cast
+    // (undefined); cells beyond the clamp merely share indices.
+    std::int64_t coordinate(double v) const {
+        return static_cast<std::int64_t>(std::clamp(std::floor(v * inverse_cell_), -0x1p62, 0x1p62));
+    }
     // Calls fn(bucket) for each cell `box` overlaps.
     template <class Fn>
     void for_each_cell(const Box3& box, Fn&& fn) const {

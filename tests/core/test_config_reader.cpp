@@ -30,15 +30,23 @@ TEST_CASE("defaults fill an empty section and are recorded", "[config]") {
     CHECK(p.steps == 200);
     CHECK(reader.resolved()["split_area"] == 0.75);
     CHECK(reader.resolved()["seed_mesh"] == "icosahedron");
-    CHECK(reader.resolved()["collisions"] == "allow");
-    CHECK(p.collisions == Collisions::allow);
-    CHECK(reader.resolved().size() == 13);
+    CHECK(reader.resolved().size() == 12);
 }
 
 TEST_CASE("growth.collisions is allow or prevent", "[config]") {
     GrowthParams p;
     CHECK(read_growth(json::parse(R"({"collisions": "prevent"})"), &p).empty());
     CHECK(p.collisions == Collisions::prevent);
+    // The default resolves to nothing (configs and checkpoints keep their
+    // bytes); "prevent" is recorded.
+    ConfigIssues issues;
+    ObjectReader reader(nullptr, "growth", issues);
+    CHECK(read_growth_params(reader).collisions == Collisions::allow);
+    CHECK_FALSE(reader.resolved().contains("collisions"));
+    const json section = json::parse(R"({"collisions": "prevent"})");
+    ObjectReader prevent(&section, "growth", issues);
+    read_growth_params(prevent);
+    CHECK(prevent.resolved()["collisions"] == "prevent");
     CHECK(has_issue(read_growth(json::parse(R"({"collisions": "forbid"})")), "growth.collisions", "forbid"));
 }
 
