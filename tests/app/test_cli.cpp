@@ -145,3 +145,30 @@ TEST_CASE("bench --json reports the documented fields", "[cli]") {
         CHECK(report.contains(key));
     CHECK(report["vertex_steps"].get<double>() > 0);
 }
+
+TEST_CASE("bench-qd runs the sphere benchmark: every algorithm, reproducibly, and the covariance costs", "[cli]") {
+    const CliResult r = run_morphogen("bench-qd --iterations 4 --seeds 2 --json");
+    REQUIRE(r.code == 0);
+    const auto report = nlohmann::json::parse(r.output);
+    CHECK(report["iterations"] == 4);
+    for (const char* algorithm : {"map_elites", "line", "cma_me", "cma_mae"}) {
+        INFO(algorithm);
+        const auto& a = report["algorithms"][algorithm];
+        REQUIRE(a["runs"].size() == 2);
+        // 2,160 births cannot fill 10,000 cells, and the objective is at most 100.
+        CHECK(a["mean_coverage_percent"].get<double>() > 0.5);
+        CHECK(a["mean_coverage_percent"].get<double>() < 21.7);
+        CHECK(a["mean_best"].get<double>() <= 100.0);
+        CHECK(a["runs"][0]["qd_score"] != a["runs"][1]["qd_score"]);  // two seeds, two runs
+    }
+    // The same seed gives the same numbers.
+    const CliResult again = run_morphogen("bench-qd --iterations 4 --seeds 1 --algorithm cma_mae --json");
+    REQUIRE(again.code == 0);
+    CHECK(nlohmann::json::parse(again.output)["algorithms"]["cma_mae"]["runs"][0]["qd_score"] ==
+          report["algorithms"]["cma_mae"]["runs"][0]["qd_score"]);
+    const CliResult cost = run_morphogen("bench-qd --covariance-cost 50 --json");
+    REQUIRE(cost.code == 0);
+    for (const char* key : {"diagonal_sample_ms", "diagonal_update_ms", "full_sample_ms", "full_eigendecomposition_ms"})
+        CHECK(nlohmann::json::parse(cost.output).contains(key));
+    CHECK(run_morphogen("bench-qd --algorithm nsga").code != 0);
+}
