@@ -10,6 +10,7 @@ namespace morphogen {
 using nlohmann::json;
 using state_json::fail;
 using state_json::member;
+using state_json::read_finite;
 using state_json::read_u64;
 
 namespace {
@@ -19,13 +20,6 @@ json vector_json(const std::vector<double>& v, GenomeBlobWriter* genomes) {
     json out = json::object();
     genome_to_json(out, v, genomes);
     return out;
-}
-
-double read_number(const json& value, const std::string& path) {
-    if (!value.is_number()) fail(path, "expected a number");
-    const double v = value.get<double>();
-    if (!std::isfinite(v)) fail(path, "not finite");
-    return v;
 }
 
 // The children a started emitter holds after `births` births: its births so
@@ -91,7 +85,7 @@ std::vector<CmaEmitterState> emitter_states_from_json(const json& list, const Em
             s.origin = read_u64(origin, at + ".origin");
             if (*s.origin >= shape.births) fail(at + ".origin", "not below the birth counter");
         }
-        s.cma.sigma = read_number(member(e, "sigma", at), at + ".sigma");
+        s.cma.sigma = read_finite(member(e, "sigma", at), at + ".sigma");
         if (!(s.cma.sigma > 0.0)) fail(at + ".sigma", "must be > 0");
         s.cma.updates = read_u64(member(e, "updates", at), at + ".updates");
         std::vector<double>* targets[] = {&s.cma.mean, &s.cma.variances, &s.cma.path_c, &s.cma.path_sigma};
@@ -115,7 +109,7 @@ std::vector<CmaEmitterState> emitter_states_from_json(const json& list, const Em
             if (status > 2) fail(cat + ".status", "must be 0, 1 or 2");
             child.status = static_cast<int>(status);
             const json& value = member(row, "value", cat);
-            child.value = value.is_null() ? invalid_fitness : read_number(value, cat + ".value");
+            child.value = value.is_null() ? invalid_fitness : read_finite(value, cat + ".value");
             if (value.is_null() && child.status != 0) fail(cat + ".status", "an invalid child must have status 0");
             child.params = genome_from_json(row, shape.dimension, cat, genomes);
             s.children.push_back(std::move(child));

@@ -12,16 +12,10 @@ namespace morphogen {
 using nlohmann::json;
 using state_json::fail;
 using state_json::member;
+using state_json::read_finite;
 using state_json::read_u64;
 
 namespace {
-double read_finite(const json& value, const std::string& path) {
-    if (!value.is_number()) fail(path, "expected a number");
-    const double v = value.get<double>();
-    if (!std::isfinite(v)) fail(path, "not finite");
-    return v;
-}
-
 std::optional<std::uint64_t> read_parent(const json& value, const std::string& path) {
     if (value.is_null()) return std::nullopt;
     return read_u64(value, path);

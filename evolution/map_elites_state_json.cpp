@@ -15,6 +15,7 @@ namespace morphogen {
 using nlohmann::json;
 using state_json::fail;
 using state_json::member;
+using state_json::read_finite;
 using state_json::read_u64;
 
 namespace {
@@ -22,11 +23,7 @@ std::vector<double> read_numbers(const json& value, const std::string& path) {
     if (!value.is_array()) fail(path, "expected an array");
     std::vector<double> out;
     out.reserve(value.size());
-    for (std::size_t i = 0; i < value.size(); ++i) {
-        if (!value[i].is_number()) fail(path + "[" + std::to_string(i) + "]", "expected a number");
-        out.push_back(value[i].get<double>());
-        if (!std::isfinite(out.back())) fail(path + "[" + std::to_string(i) + "]", "not finite");
-    }
+    for (std::size_t i = 0; i < value.size(); ++i) out.push_back(read_finite(value[i], path + "[" + std::to_string(i) + "]"));
     return out;
 }
 }  // namespace
@@ -118,9 +115,7 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
         if (elites[i].size() != (has_threshold ? 9u : 8u)) fail(path, "unexpected keys");
         if (has_threshold) {
             if (!annealing) fail(path + ".threshold", "only a run with a cma_mae emitter keeps thresholds");
-            const json& t = elites[i]["threshold"];
-            if (!t.is_number() || !std::isfinite(t.get<double>())) fail(path + ".threshold", "expected a finite number");
-            const double threshold = t.get<double>();
+            const double threshold = read_finite(elites[i]["threshold"], path + ".threshold");
             if (!(threshold > annealing->threshold_min))
                 fail(path + ".threshold", "not above threshold_min (such cells are not stored)");
             if (threshold > elite.fitness && threshold - elite.fitness > 1e-12 * std::max(1.0, std::fabs(elite.fitness)))

@@ -1,5 +1,6 @@
 #include "evolution/state_json_read.hpp"
 
+#include <cmath>
 #include <stdexcept>
 
 namespace morphogen::state_json {
@@ -16,6 +17,13 @@ const nlohmann::json& member(const nlohmann::json& object, const char* key, cons
 std::uint64_t read_u64(const nlohmann::json& value, const std::string& path) {
     if (!value.is_number_unsigned()) fail(path, "expected a non-negative integer");
     return value.get<std::uint64_t>();
+}
+
+double read_finite(const nlohmann::json& value, const std::string& path) {
+    if (!value.is_number()) fail(path, "expected a number");
+    const double v = value.get<double>();
+    if (!std::isfinite(v)) fail(path, "not finite");
+    return v;
 }
 
 }  // namespace morphogen::state_json

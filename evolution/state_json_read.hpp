@@ -12,5 +12,7 @@ namespace morphogen::state_json {
 // object[key], failing if `object` is not an object or lacks the key.
 const nlohmann::json& member(const nlohmann::json& object, const char* key, const std::string& path);
 std::uint64_t read_u64(const nlohmann::json& value, const std::string& path);
+// A finite number ("expected a number" / "not finite" otherwise).
+double read_finite(const nlohmann::json& value, const std::string& path);
 
 }  // namespace morphogen::state_json
