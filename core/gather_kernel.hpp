@@ -2,8 +2,11 @@
 // The gather phase (docs/algorithm.md §4.2): each vertex's network inputs from the
 // previous outputs — its own, the mean and the population standard deviation
 // over its neighbours — with the last four overwritten by its growth direction
-// and height. Compiled for x86-64-v3 and baseline, picked at run time.
+// and height (and, in the branching mode, the one before them by whether the
+// vertex grows, §5.8). Compiled for x86-64-v3 and baseline, picked at run time.
 #include <Eigen/Core>
+
+#include <cstdint>
 
 namespace morphogen::kernel {
 
@@ -15,6 +18,9 @@ struct GatherInput {
     const Eigen::Vector3d* directions = nullptr;
     const Eigen::Vector3d* positions = nullptr;
     double height_scale = 10.0;
+    // Branching mode (§5.8): 1 where the vertex grows, 0 where it is dormant;
+    // null in the paper's mode.
+    const std::uint8_t* active = nullptr;
 };
 
 // Writes the 3N inputs of vertices [first, first + count), vertex after

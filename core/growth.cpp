@@ -1,5 +1,6 @@
 #include "core/growth.hpp"
 
+#include "core/branching.hpp"
 #include "core/errors.hpp"
 #include "core/gather_kernel.hpp"
 
@@ -56,6 +57,9 @@ Grower::Grower(const Network& network, const GrowthParams& params) : network_(ne
     if (network.inputs() != 3 * N)
         throw ConfigError("network: the input layer must have 3 * outputs = " + std::to_string(3 * N) +
                           " neurons, it has " + std::to_string(network.inputs()));
+    if (params.mode == GrowthMode::branching && N < kBranchingOutputs)
+        throw ConfigError("network.outputs: growth.mode \"branching\" needs at least " +
+                          std::to_string(kBranchingOutputs) + " outputs, the network has " + std::to_string(N));
     flip_criteria_.min_normal_dot = std::cos(params.flip_max_angle_deg * std::numbers::pi / 180.0);
     flip_criteria_.min_valence = params.min_valence;
 }
@@ -66,6 +70,7 @@ GrowthState Grower::start(const Seed& seed) const {
     state.directions = seed.directions;
     state.outputs_per_vertex = network_.outputs();
     state.outputs.assign(static_cast<std::size_t>(network_.outputs()) * seed.mesh.num_vertices(), 0.5);
+    if (params_.mode == GrowthMode::branching) state.active.assign(static_cast<std::size_t>(seed.mesh.num_vertices()), 1);
     return state;
 }
 
@@ -172,6 +177,7 @@ double Grower::think(GrowthState& state, GrowthWorkspace& workspace, bool timed)
     in.directions = state.directions.data();
     in.positions = mesh.positions().data();
     in.height_scale = params_.height_scale;
+    in.active = state.active.empty() ? nullptr : state.active.data();
     workspace.next_outputs.resize(static_cast<std::size_t>(network_.outputs()) * mesh.num_vertices());
     if (timed) tick_overhead();  // calibrated once, outside the timed interval
     const std::uint64_t start = timed ? ticks() : 0;
@@ -181,16 +187,25 @@ double Grower::think(GrowthState& state, GrowthWorkspace& workspace, bool timed)
     return gather.share_of(total);
 }
 
+void Grower::branch(GrowthState& state, GrowthWorkspace& workspace) const {
+    update_activity(state.active, state.outputs, state.outputs_per_vertex);
+    steer_directions(state.directions, state.mesh, state.outputs, state.outputs_per_vertex,
+                     workspace.neighbour_offsets, workspace.neighbours, params_.turn_rate, workspace.steered);
+}
+
 void Grower::move(GrowthState& state) const {
     std::vector<Vec3>& x = state.mesh.positions();
     const int V = state.mesh.num_vertices();
     const double* w = state.outputs.data();
     const std::ptrdiff_t N = state.outputs_per_vertex;
+    // d_i (§5.2); a dormant vertex (branching mode, §5.8) does not move.
+    const std::uint8_t* active = state.active.empty() ? nullptr : state.active.data();
+    const auto step_of = [&](int i) { return active != nullptr && active[i] == 0 ? 0.0 : std::max(0.0, w[N * i] - 0.5); };
     double total = 0.0;
-    for (int i = 0; i < V; ++i) total += std::max(0.0, w[N * i] - 0.5);
+    for (int i = 0; i < V; ++i) total += step_of(i);
     if (total > 0.0) {
         const double k = std::min(params_.speed, params_.budget / total);
-        for (int i = 0; i < V; ++i) x[i] += (k * std::max(0.0, w[N * i] - 0.5)) * state.directions[i];
+        for (int i = 0; i < V; ++i) x[i] += (k * step_of(i)) * state.directions[i];
     }
     if (params_.ground)
         for (Vec3& p : x) p.z() = std::max(p.z(), 0.0);
@@ -242,6 +257,8 @@ void Grower::split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuar
                                3.0;
         mesh.split_face(f, mesh.face_centroid(f));
         state.directions.push_back(direction);
+        // Branching mode (§5.8): a new vertex grows only between three that grow.
+        if (!state.active.empty()) state.active.push_back(state.active[a] & state.active[b] & state.active[c]);
         if (guard != nullptr)
             for (const int written : {f, mesh.num_faces() - 2, mesh.num_faces() - 1}) guard->face_changed(mesh, written);
     }
@@ -270,6 +287,10 @@ void Grower::step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* ti
     if (times != nullptr) {
         times->think -= gather_share * fused;
         times->gather += gather_share * fused;
+    }
+    if (params_.mode == GrowthMode::branching) {
+        branch(state, workspace);
+        clock.lap(&PhaseTimes::move);
     }
     // growth.collisions "prevent" (docs/algorithm.md §5.7): the move is
     // settled, splits are listed and flips guarded, so no two faces intersect.

@@ -22,6 +22,9 @@ struct GrowthState {
     std::vector<double> outputs;   // w: N per vertex, vertex after vertex, in (0, 1]
     int outputs_per_vertex = 0;    // N
     int steps_done = 0;
+    // growth.mode "branching" (§5.8): 1 where the vertex grows, 0 where it is
+    // dormant; empty in the paper's mode.
+    std::vector<std::uint8_t> active;
 
     double output(int vertex, int channel) const {
         return outputs[static_cast<std::size_t>(vertex) * outputs_per_vertex + channel];
@@ -44,6 +47,7 @@ struct GrowthWorkspace {
     std::vector<double> next_outputs;  // N per vertex
     std::vector<int> neighbour_offsets, neighbours, cursor;  // CSR neighbour lists
     std::vector<double> split_w1;                            // w[1] of each vertex
+    std::vector<Vec3> steered;                               // branching mode: new directions
     NetworkWorkspace network;
     // growth.collisions "prevent" only: positions before the move, the guard.
     std::vector<Vec3> before_move;
@@ -55,7 +59,8 @@ using StepObserver = std::function<void(const GrowthState&, int step)>;
 
 class Grower {
 public:
-    // Throws ConfigError if the network does not fit (inputs != 3 * outputs, N < 3).
+    // Throws ConfigError if the network does not fit (inputs != 3 * outputs, N < 3,
+    // or N < 7 in the branching mode).
     Grower(const Network& network, const GrowthParams& params);
 
     // The state before step 0: the seed with every output 0.5.
@@ -73,6 +78,8 @@ private:
     // timed, returns the gather's share of the time, estimated from a
     // sample of its blocks (else 0).
     double think(GrowthState& state, GrowthWorkspace& workspace, bool timed) const;
+    // Branching mode (§5.8): stop and start growth, turn the directions.
+    void branch(GrowthState& state, GrowthWorkspace& workspace) const;
     void move(GrowthState& state) const;
     // With a guard, every face a split writes is reported to it (§5.7).
     void split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuard* guard) const;

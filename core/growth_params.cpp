@@ -39,6 +39,17 @@ GrowthParams read_growth_params(ObjectReader& reader) {
     // The default is not recorded: a config resolves to the same bytes as
     // before the key existed, so checkpoints written then still resume.
     if (p.collisions == Collisions::allow) reader.drop_resolved("collisions");
+    p.mode = reader.choice("mode", "paper", {"paper", "branching"}) == "branching" ? GrowthMode::branching
+                                                                               : GrowthMode::paper;
+    if (p.mode == GrowthMode::paper) {
+        // As for collisions: the paper's model resolves to the bytes it always
+        // had. A turn rate means nothing to it, so one given is a mistake.
+        reader.drop_resolved("mode");
+        if (reader.raw("turn_rate") != nullptr)
+            reader.issues().add(reader.path_of("turn_rate"), "is used only with growth.mode \"branching\"");
+    } else {
+        p.turn_rate = reader.number("turn_rate", p.turn_rate, 0.0, 1e6);
+    }
     if (p.seed_mesh.empty()) reader.issues().add(reader.path_of("seed_mesh"), "must name a built-in seed or a mesh file");
     reader.finish();
     return p;

@@ -22,6 +22,14 @@ inline constexpr double kMaxSeedRadius = 1e6;
 // surface pass through itself.
 enum class Collisions { allow, prevent };
 
+// growth.mode (docs/algorithm.md §5.8): the paper's model, or the branching
+// mode, in which outputs 3-6 also stop and start a vertex's growth and steer
+// its direction.
+enum class GrowthMode { paper, branching };
+
+// The network outputs the branching mode needs (channels 0-6).
+inline constexpr int kBranchingOutputs = 7;
+
 struct GrowthParams {
     int steps = 200;
     double speed = 0.2;
@@ -36,6 +44,8 @@ struct GrowthParams {
     std::string seed_mesh = "icosahedron";  // built-in name or a mesh file path
     double seed_radius = 1.0;  // in [kMinSeedRadius, kMaxSeedRadius]
     Collisions collisions = Collisions::allow;
+    GrowthMode mode = GrowthMode::paper;
+    double turn_rate = 0.1;  // growth.turn_rate, branching mode only (§5.8)
 };
 
 // Read a section; problems are added to reader.issues(), defaults fill gaps.

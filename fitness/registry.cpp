@@ -7,6 +7,7 @@
 #include "fitness/cgal_geometry.hpp"
 #include "fitness/light.hpp"
 #include "fitness/measures.hpp"
+#include "fitness/tree_fitness.hpp"
 #include "fitness/tree_sections.hpp"
 
 #include <utility>
@@ -37,6 +38,16 @@ public:
 
 private:
     LightParams params_;
+};
+
+class TreeFunction final : public FitnessFunction {
+public:
+    explicit TreeFunction(TreeFitnessParams params) : params_(std::move(params)) {}
+    std::string type() const override { return "tree"; }
+    double evaluate(MeshView mesh) const override { return tree_score(mesh, params_).score; }
+
+private:
+    TreeFitnessParams params_;
 };
 
 // A measure without keys (height, area, ...).
@@ -79,8 +90,8 @@ std::unique_ptr<FitnessFunction> read_canopy(ObjectReader& reader) {
     return std::make_unique<CanopyFunction>(params);
 }
 
-std::unique_ptr<FitnessFunction> read_light(ObjectReader& reader) {
-    LightParams params;
+// The keys of `light`, shared by `tree`; `params` holds the defaults.
+void read_light_params(ObjectReader& reader, LightParams& params) {
     params.elevations_deg = reader.number_list("elevations_deg", params.elevations_deg, 0.0, 90.0);
     params.azimuths_deg = reader.number_list("azimuths_deg", params.azimuths_deg, -360.0, 360.0);
     params.spacing = reader.number("spacing", params.spacing, 0.0, kBig, /*min_exclusive=*/true);
@@ -94,7 +105,21 @@ std::unique_ptr<FitnessFunction> read_light(ObjectReader& reader) {
     for (double e : params.elevations_deg) needs_azimuth |= e != 90.0;
     if (needs_azimuth && params.azimuths_deg.empty())
         reader.issues().add(reader.path_of("azimuths_deg"), "needs at least one azimuth for elevations below 90");
+}
+
+std::unique_ptr<FitnessFunction> read_light(ObjectReader& reader) {
+    LightParams params;
+    read_light_params(reader, params);
     return std::make_unique<LightFunction>(std::move(params));
+}
+
+std::unique_ptr<FitnessFunction> read_tree(ObjectReader& reader) {
+    TreeFitnessParams params;
+    read_light_params(reader, params.light);
+    params.trunk_target = reader.number("trunk_target", params.trunk_target, 0.0, kBig, /*min_exclusive=*/true);
+    params.loops_target = static_cast<int>(reader.integer("loops_target", params.loops_target, 1, 1000));
+    params.material_cost = reader.number("material_cost", params.material_cost, 0.0, kBig);
+    return std::make_unique<TreeFunction>(std::move(params));
 }
 
 double vertex_count(MeshView mesh) { return static_cast<double>(mesh.positions.size()); }
@@ -116,6 +141,7 @@ struct TypeEntry {
 const TypeEntry kTypes[] = {
     {"canopy", read_canopy, nullptr},
     {"light", read_light, nullptr},
+    {"tree", read_tree, nullptr},
     {"sum", read_sum, nullptr},
     {"height", nullptr, mesh_height},
     {"footprint", nullptr, mesh_footprint},

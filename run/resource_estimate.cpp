@@ -4,6 +4,7 @@
 #include "core/network.hpp"
 #include "fitness/canopy.hpp"
 #include "fitness/light.hpp"
+#include "fitness/tree_fitness.hpp"
 #include "run/worker_threads.hpp"
 
 #include <unistd.h>
@@ -153,8 +154,14 @@ void add_fitness(FitnessCost& cost, const json& section, const std::string& path
     } else if (type == "canopy") {
         const json& cell = at_or_null(section, "cell");
         add_canopy(cost, cell.is_number() ? cell.get<double>() : CanopyParams{}.cell, path, faces, reach);
-    } else if (type == "light") {
-        LightParams p;
+    } else if (type == "light" || type == "tree") {
+        // A tree casts the rays of its light (its own defaults) and takes
+        // sections and the volume, as cheap as a measure.
+        LightParams p = type == "tree" ? TreeFitnessParams{}.light : LightParams{};
+        if (type == "tree") {
+            cost.bytes = std::max(cost.bytes, faces * measure_bytes_per_face);
+            cost.work.push_back({"tree sections and volume", {path + ".type"}, 2 * faces * measure_second_per_face});
+        }
         if (const json& e = at_or_null(section, "elevations_deg"); e.is_array()) p.elevations_deg = e.get<std::vector<double>>();
         if (const json& a = at_or_null(section, "azimuths_deg"); a.is_array()) p.azimuths_deg = a.get<std::vector<double>>();
         if (const json& s = at_or_null(section, "spacing"); s.is_number()) p.spacing = s.get<double>();

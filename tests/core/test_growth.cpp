@@ -1,6 +1,6 @@
 #include "core/errors.hpp"
 #include "core/growth.hpp"
-#include "tests/support/reference_growth.hpp"
+#include "tests/support/reference_compare.hpp"
 #include "tests/support/test_meshes.hpp"
 
 #include <catch2/catch.hpp>
@@ -56,28 +56,7 @@ TEST_CASE("growth matches the plain reference implementation of the spec", "[gro
     GrowthParams params;
     params.steps = 40;
     params.max_vertices = 700;
-    for (const std::string seed_name : {"icosahedron", "octahedron", "tetrahedron"}) {
-        const Seed seed = make_seed(seed_name, 1.0);
-        for (std::uint64_t g = 1; g <= 6; ++g) {
-            const Network network(random_test_genome(default_layers, g + 100));
-            const Grower grower(network, params);
-            GrowthWorkspace workspace;
-            GrowthState state = grower.start(seed);
-            ReferenceGrowth reference(seed, network.outputs());
-            for (int t = 0; t < params.steps; ++t) {
-                grower.step(state, workspace);
-                reference.step(t, network, params);
-                INFO(seed_name << " genome " << g << " step " << t);
-                REQUIRE(state.mesh.faces() == reference.faces);
-                for (int v = 0; v < state.mesh.num_vertices(); ++v) {
-                    REQUIRE((state.mesh.position(v) - reference.x[v]).norm() < 1e-9);
-                    REQUIRE((state.directions[v] - reference.h[v]).norm() < 1e-9);
-                    for (int c = 0; c < network.outputs(); ++c)
-                        REQUIRE(std::abs(state.output(v, c) - reference.w[v][c]) < 1e-9);
-                }
-            }
-        }
-    }
+    require_same_as_reference(params, 101);
 }
 
 TEST_CASE("the same genome grows the same mesh bit for bit, timed or not", "[growth]") {

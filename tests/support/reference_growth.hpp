@@ -19,10 +19,38 @@ struct ReferenceGrowth {
     std::vector<Vec3> x, h;
     std::vector<Face> faces;
     std::vector<std::vector<double>> w;
+    std::vector<int> active;  // growth.mode "branching" (§5.8): every seed vertex grows
 
-    ReferenceGrowth(const Seed& seed, int outputs)
+    ReferenceGrowth(const Seed& seed, int outputs, bool branching = false)
         : x(seed.mesh.positions()), h(seed.directions), faces(seed.mesh.faces()),
-          w(x.size(), std::vector<double>(outputs, 0.5)) {}
+          w(x.size(), std::vector<double>(outputs, 0.5)) {
+        if (branching) active.assign(x.size(), 1);
+    }
+
+    // §5.8: switch growth on channel 3 (stop below 1/3, start above 2/3), then
+    // turn every direction by channels 4-6, all from the old directions.
+    void branch(const std::vector<std::set<int>>& nb, double turn_rate) {
+        const int V = static_cast<int>(x.size());
+        for (int i = 0; i < V; ++i) {
+            if (active[i] == 1 && w[i][3] < 1.0 / 3.0) active[i] = 0;
+            else if (active[i] == 0 && w[i][3] > 2.0 / 3.0) active[i] = 1;
+        }
+        const auto unit = [](const Vec3& v) { return v.norm() > 1e-12 ? Vec3(v.normalized()) : Vec3(Vec3::Zero()); };
+        std::vector<Vec3> normal(V, Vec3::Zero());
+        for (const Face& f : faces)
+            for (int a : f) normal[a] += (x[f[1]] - x[f[0]]).cross(x[f[2]] - x[f[0]]);
+        std::vector<Vec3> turned(V);
+        for (int i = 0; i < V; ++i) {
+            const Vec3 n = normal[i].norm() > 0 ? Vec3(normal[i].normalized()) : Vec3(Vec3::Zero());
+            Vec3 mean = Vec3::Zero();
+            for (int j : nb[i]) mean += h[j];
+            mean /= static_cast<double>(nb[i].size());
+            const Vec3 target = (2 * w[i][4] - 1) * n + (2 * w[i][5] - 1) * Vec3(0, 0, 1) + (2 * w[i][6] - 1) * unit(h[i] - mean);
+            const Vec3 sum = h[i] + turn_rate * target;
+            turned[i] = sum.norm() > 1e-12 ? Vec3(sum.normalized()) : h[i];
+        }
+        h = turned;
+    }
 
     void step(int t, const Network& net, const GrowthParams& p) {
         const int V = static_cast<int>(x.size());
@@ -51,15 +79,18 @@ struct ReferenceGrowth {
             in[3 * N - 3] = 0.5 + 0.5 * h[i].y();
             in[3 * N - 2] = 0.5 + 0.5 * h[i].z();
             in[3 * N - 1] = x[i].z() / p.height_scale;
+            if (!active.empty()) in[3 * N - 5] = active[i];
             next[i] = net.evaluate_reference(in);
         }
         w = next;
-        // 2. Move.
+        if (!active.empty()) branch(nb, p.turn_rate);
+        // 2. Move (a dormant vertex does not move).
+        const auto d = [&](int i) { return !active.empty() && active[i] == 0 ? 0.0 : std::max(0.0, w[i][0] - 0.5); };
         double S = 0;
-        for (int i = 0; i < V; ++i) S += std::max(0.0, w[i][0] - 0.5);
+        for (int i = 0; i < V; ++i) S += d(i);
         if (S > 0) {
             const double k = std::min(p.speed, p.budget / S);
-            for (int i = 0; i < V; ++i) x[i] += k * std::max(0.0, w[i][0] - 0.5) * h[i];
+            for (int i = 0; i < V; ++i) x[i] += k * d(i) * h[i];
         }
         if (p.ground)
             for (Vec3& q : x) q.z() = std::max(q.z(), 0.0);
@@ -80,6 +111,7 @@ struct ReferenceGrowth {
             const Vec3 nf = n.normalized();
             const Vec3 sum = nf + w[a][2] * h[a] + w[b][2] * h[b] + w[c][2] * h[c];
             h.push_back(sum.norm() < 1e-12 ? nf : Vec3(sum.normalized()));
+            if (!active.empty()) active.push_back(active[a] && active[b] && active[c] ? 1 : 0);
             faces[f] = {a, b, v};
             faces.push_back({b, c, v});
             faces.push_back({c, a, v});

@@ -1,0 +1,32 @@
+#pragma once
+// The `tree` fitness (docs/fitness.md "tree"): light captured with
+// self-shading above a competitors' height, counted in full only for a tree
+// form, minus a construction cost in proportion to the volume:
+//
+//   tree = light · T · B − material_cost · volume
+//   T = min(1, trunk_target / trunk_ratio)      (0 when trunk_ratio is undefined)
+//   B = min(upper_loops, loops_target) / loops_target
+//
+// trunk_ratio and upper_loops are the tree measures of fitness/tree_sections.hpp.
+// T and B saturate at the criteria, so nothing is gained by a thinner
+// trunk or more loops than a tree needs; light and cost keep the pressure on.
+#include "core/mesh.hpp"
+#include "fitness/light.hpp"
+
+namespace morphogen {
+
+struct TreeFitnessParams {
+    LightParams light;           // the `light` keys and defaults
+    double trunk_target = 0.25;  // trunk_ratio at or below which T = 1, > 0
+    int loops_target = 3;        // upper_loops at or above which B = 1, >= 1
+    double material_cost = 0.05; // per unit of enclosed volume, >= 0
+};
+
+struct TreeScore {
+    double light = 0, trunk_factor = 0, branch_factor = 0, volume = 0, score = 0;
+};
+
+// Thread-safe. Throws what light_captured and tree_sections throw.
+TreeScore tree_score(MeshView mesh, const TreeFitnessParams& params);
+
+}  // namespace morphogen
