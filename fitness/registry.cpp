@@ -119,6 +119,7 @@ std::unique_ptr<FitnessFunction> read_tree(ObjectReader& reader) {
     params.trunk_target = reader.number("trunk_target", params.trunk_target, 0.0, kBig, /*min_exclusive=*/true);
     params.loops_target = static_cast<int>(reader.integer("loops_target", params.loops_target, 1, 1000));
     params.material_cost = reader.number("material_cost", params.material_cost, 0.0, kBig);
+    params.root_height = reader.number("root_height", params.root_height, -kBig, kBig);
     return std::make_unique<TreeFunction>(std::move(params));
 }
 

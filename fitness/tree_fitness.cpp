@@ -5,14 +5,20 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace morphogen {
 
 TreeScore tree_score(MeshView mesh, const TreeFitnessParams& params) {
     TreeScore s;
     const TreeSections sections = tree_sections(mesh);
-    // An undefined ratio (no height, nothing above the middle) is no trunk.
-    s.trunk_factor = std::isnan(sections.trunk_ratio) ? 0.0
+    // A plant must stand on the ground: one that floats has no trunk, however
+    // its sections look. An undefined ratio (no height, nothing above the
+    // middle) is no trunk either.
+    double lowest = std::numeric_limits<double>::infinity();
+    for (const Vec3& p : mesh.positions) lowest = std::min(lowest, p.z());
+    s.rooted = lowest <= params.root_height;
+    s.trunk_factor = !s.rooted || std::isnan(sections.trunk_ratio) ? 0.0
                      : sections.trunk_ratio <= params.trunk_target
                          ? 1.0
                          : params.trunk_target / sections.trunk_ratio;

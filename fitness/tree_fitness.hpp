@@ -4,7 +4,8 @@
 // form, minus a construction cost in proportion to the volume:
 //
 //   tree = light · T · B − material_cost · volume
-//   T = min(1, trunk_target / trunk_ratio)      (0 when trunk_ratio is undefined)
+//   T = min(1, trunk_target / trunk_ratio)      (0 when trunk_ratio is undefined,
+//                                                or the lowest vertex is above root_height)
 //   B = min(upper_loops, loops_target) / loops_target
 //
 // trunk_ratio and upper_loops are the tree measures of fitness/tree_sections.hpp.
@@ -20,9 +21,11 @@ struct TreeFitnessParams {
     double trunk_target = 0.25;  // trunk_ratio at or below which T = 1, > 0
     int loops_target = 3;        // upper_loops at or above which B = 1, >= 1
     double material_cost = 0.05; // per unit of enclosed volume, >= 0
+    double root_height = 0.1;    // a plant whose lowest vertex is higher floats: no trunk
 };
 
 struct TreeScore {
+    bool rooted = false;
     double light = 0, trunk_factor = 0, branch_factor = 0, volume = 0, score = 0;
 };
 
