@@ -123,6 +123,11 @@ ExperimentConfig read_experiment_config(const json& original, const std::string&
 
     config.network = read_section(top, "network", issues, read_network_params);
     config.growth = read_section(top, "growth", issues, read_growth_params);
+    // The branching mode drives growth with outputs 3-6 (§5.8); caught here,
+    // not at the first birth, so a run never starts with every child invalid.
+    if (config.growth.mode == GrowthMode::branching && config.network.outputs < kBranchingOutputs)
+        issues.add("network.outputs", "growth.mode \"branching\" needs at least " + std::to_string(kBranchingOutputs) +
+                                          " outputs, got " + std::to_string(config.network.outputs));
     config.fitness = read_section(top, "fitness", issues, read_fitness);
     config.evolution = read_section(top, "evolution", issues,
                                     [&](ObjectReader& r) { return read_evolution_params(r, &config.algorithm); });

@@ -9,6 +9,8 @@
 #include <algorithm>
 #include <csignal>
 #include <fstream>
+#include <set>
+#include <sstream>
 #include <thread>
 
 using namespace morphogen::test;
@@ -19,6 +21,12 @@ std::string arg(const char* option, int value) {
     text += ' ';
     text += std::to_string(value);
     return text;
+}
+
+// `path` with `number` appended to its last component ("t" -> "t2").
+fs::path numbered(fs::path path, int number) {
+    path += std::to_string(number);
+    return path;
 }
 
 std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
@@ -95,11 +103,7 @@ TEST_CASE("evolve writes the run directory", "[app][evolve]") {
 
 TEST_CASE("evolve gives the same bytes for 1 or 2 or 8 threads", "[app][evolve][determinism]") {
     TinyRun t("evolve-threads", 4);
-    for (int threads : {1, 2, 8}) {
-        fs::path out = t.tmp.path / "t";
-        out += std::to_string(threads);
-        REQUIRE(t.evolve(out, arg("--threads", threads)).code == 0);
-    }
+    for (int threads : {1, 2, 8}) REQUIRE(t.evolve(numbered(t.tmp.path / "t", threads), arg("--threads", threads)).code == 0);
     check_same_results(t.tmp.path / "t1", t.tmp.path / "t2");
     check_same_results(t.tmp.path / "t1", t.tmp.path / "t8");
     // and a different seed gives a different run
@@ -108,7 +112,7 @@ TEST_CASE("evolve gives the same bytes for 1 or 2 or 8 threads", "[app][evolve][
 
     // The pipeline schedule too; its lag changes the run, threads never do.
     write_text(t.config, tiny_pipeline_config(4, 8, 5));
-    for (int threads : {1, 2, 8}) REQUIRE(t.evolve(t.tmp.path / ("p" + std::to_string(threads)), arg("--threads", threads)).code == 0);
+    for (int threads : {1, 2, 8}) REQUIRE(t.evolve(numbered(t.tmp.path / "p", threads), arg("--threads", threads)).code == 0);
     check_same_results(t.tmp.path / "p1", t.tmp.path / "p2");
     check_same_results(t.tmp.path / "p1", t.tmp.path / "p8");
     CHECK(read_text(t.tmp.path / "p1" / "lineage.csv") != read_text(t.tmp.path / "t1" / "lineage.csv"));
@@ -213,4 +217,31 @@ TEST_CASE("a damaged or mismatched checkpoint is refused and left as it was", "[
     write_text(run / "lineage.csv", "id,birth,parent1,parent2,fitness\n");
     CHECK(run_morphogen("resume " + q(run) + " --generations 2").code == 5);
     CHECK(read_text(run / "checkpoint.json") == good);
+}
+
+TEST_CASE("the branching mode with collisions prevented and the tree fitness: the same bytes for 1, 2 and 8 "
+          "threads, and a resumed run equals an uninterrupted one",
+          "[app][evolve][determinism][branching]") {
+    TinyRun t("evolve-branching", 4);
+    write_text(t.config, R"({"network": {"outputs": 7, "hidden": [6]},
+ "growth": {"steps": 30, "max_vertices": 300, "mode": "branching", "turn_rate": 0.2, "collisions": "prevent"},
+ "fitness": {"type": "tree", "min_height": 1, "spacing": 0.25},
+ "evolution": {"population": 8, "lag": 5, "mutation_rate": 0.2},
+ "run": {"generations": 4, "seed": 7, "export_every": 0}})");
+    for (int threads : {1, 2, 8}) REQUIRE(t.evolve(numbered(t.tmp.path / "t", threads), arg("--threads", threads)).code == 0);
+    check_same_results(t.tmp.path / "t1", t.tmp.path / "t2");
+    check_same_results(t.tmp.path / "t1", t.tmp.path / "t8");
+    const auto config = nlohmann::json::parse(read_text(t.tmp.path / "t1" / "config.json"));
+    CHECK(config["growth"]["mode"] == "branching");
+    CHECK(config["fitness"]["trunk_target"] == 0.25);
+    // Not every genome scores the same: the search has something to select.
+    std::istringstream lineage(read_text(t.tmp.path / "t1" / "lineage.csv"));
+    std::set<std::string> scores;
+    for (std::string line; std::getline(lineage, line);) scores.insert(line.substr(line.rfind(',') + 1));
+    CHECK(scores.size() > 2);  // the header's "fitness" and at least two values
+
+    const auto parts = t.tmp.path / "parts";
+    REQUIRE(t.evolve(parts, "--threads 1 --generations 2").code == 0);
+    REQUIRE(run_morphogen("resume " + q(parts) + " --threads 2 --generations 4").code == 0);
+    check_same_results(t.tmp.path / "t1", parts);
 }

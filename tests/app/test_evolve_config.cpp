@@ -65,6 +65,7 @@ std::string config_errors(const json& document) {
 std::vector<json> fitness_sections() {
     return {json{{"type", "canopy"}},
             json{{"type", "light"}},
+            json{{"type", "tree"}},
             json{{"type", "height"}},
             json{{"type", "sum"}, {"terms", json::array({json{{"type", "canopy"}}, json{{"type", "light"}}})}}};
 }
@@ -199,6 +200,11 @@ TEST_CASE("schema.json defaults equal the reader's defaults", "[app][config][sch
     };
     for (const json& fitness : fitness_sections())
         walk(schema, schema, read_experiment_config(json{{"fitness", fitness}}, "f").resolved, "", compare_defaults);
+    // The branching mode's own key (turn_rate), resolved only in that mode.
+    walk(schema, schema, read_experiment_config(json{{"growth", {{"mode", "branching"}}}}, "g").resolved, "",
+         [&](const std::string& path, const json& key_schema, const json& value) {
+             if (path != "growth.mode") compare(path, key_schema, value);
+         });
     CHECK(compared > 40);
     // every section's default is {} (all of its keys default)
     for (const char* section : {"network", "growth", "fitness", "evolution", "run"})
@@ -220,6 +226,10 @@ TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]
             json document = json::object();
             document[section][key] = value;
             if (section == "fitness" && (key == "spacing" || key == "min_height")) document[section]["type"] = "light";
+            if (section == "fitness" && (key == "trunk_target" || key == "loops_target" || key == "material_cost" ||
+                                         key == "root_height"))
+                document[section]["type"] = "tree";
+            if (section == "growth" && key == "turn_rate") document[section]["mode"] = "branching";
             return document;
         };
         const bool integer = key_schema["type"] == "integer";
@@ -253,6 +263,9 @@ TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]
     };
     walk(schema, schema, read_experiment_config(json::object(), "{}").resolved, "", probe);
     walk(schema, schema, read_experiment_config(json{{"fitness", {{"type", "light"}}}}, "f").resolved, "", probe);
+    walk(schema, schema,
+         read_experiment_config(json{{"growth", {{"mode", "branching"}}}, {"fitness", {{"type", "tree"}}}}, "t").resolved,
+         "", probe);
     CHECK(probed > 25);
 }
 
@@ -418,6 +431,23 @@ TEST_CASE("a section that is null is refused, not taken for its defaults", "[app
     overrides.seed = 3;
     CHECK_THROWS_WITH(load_experiment_config((tmp.path / "c.json").string(), overrides),
                       Catch::Contains("run: expected an object, got null"));
+}
+
+TEST_CASE("growth.mode: the branching mode needs 7 outputs, and turn_rate only means something there", "[app][config]") {
+    CHECK(config_errors(json{{"growth", {{"mode", "branching"}}}}) == "");
+    CHECK_THAT(config_errors(json{{"growth", {{"mode", "branching"}}}, {"network", {{"outputs", 6}}}}),
+               Catch::Contains("network.outputs: growth.mode \"branching\" needs at least 7 outputs, got 6"));
+    CHECK_THAT(config_errors(json{{"growth", {{"turn_rate", 0.2}}}}),
+               Catch::Contains("growth.turn_rate: is used only with growth.mode \"branching\""));
+    CHECK_THAT(config_errors(json{{"growth", {{"mode", "branchy"}}}}), Catch::Contains("growth.mode"));
+    // The paper's mode resolves to the bytes it had before the key existed.
+    CHECK_FALSE(read_experiment_config(json{{"growth", {{"mode", "paper"}}}}, "p").resolved["growth"].contains("mode"));
+    const json branching = read_experiment_config(json{{"growth", {{"mode", "branching"}}}}, "b").resolved["growth"];
+    CHECK(branching["mode"] == "branching");
+    CHECK(branching["turn_rate"] == 0.1);
+    // and the schema agrees
+    CHECK(schema_errors(json{{"growth", {{"turn_rate", 0.2}}}}) != "");
+    CHECK(schema_errors(json{{"growth", {{"mode", "branching"}, {"turn_rate", 0.2}}}}) == "");
 }
 
 TEST_CASE("growth.seed_radius beyond what a seed can be is a config error naming the key and range", "[app][config]") {
