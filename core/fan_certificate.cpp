@@ -26,16 +26,12 @@ int octant(int s1, int s2) {
 
 }  // namespace
 
-bool fan_certified(const TriMesh& mesh, int v, std::vector<Vec3>& spokes) {
-    const std::vector<Vec3>& x = mesh.positions();
-    const Vec3 centre = x[v];
-    spokes.clear();
-    mesh.for_each_neighbour(v, [&](int u) { spokes.push_back(x[u] - centre); });
+namespace {
+
+// The certificate for one direction N (any vector: the proof holds for the
+// exact N it is given).
+bool certified_along(const Vec3& normal, const std::vector<Vec3>& spokes) {
     const std::size_t n = spokes.size();
-    if (n < 3) return false;
-    // N may be any vector: the proof holds for the exact N it is given.
-    Vec3 normal = Vec3::Zero();
-    for (std::size_t k = 0; k < n; ++k) normal += spokes[k].cross(spokes[k + 1 == n ? 0 : k + 1]);
     const Vec3 normal_abs = normal.cwiseAbs();
     // Every face positively oriented along N: N . (e_k x e_k+1) > 0. The
     // bound covers the rounding of the spokes (u - v), of the cross product
@@ -72,6 +68,29 @@ bool fan_certified(const TriMesh& mesh, int v, std::vector<Vec3>& spokes) {
         last = now;
     }
     return s1 < 0;  // e_0 to the right of r: r lies inside face 0's angle
+}
+
+}  // namespace
+
+bool fan_certified(const TriMesh& mesh, int v, std::vector<Vec3>& spokes) {
+    const std::vector<Vec3>& x = mesh.positions();
+    const Vec3 centre = x[v];
+    spokes.clear();
+    mesh.for_each_neighbour(v, [&](int u) { spokes.push_back(x[u] - centre); });
+    const std::size_t n = spokes.size();
+    if (n < 3) return false;
+    // N: the faces' cross products summed (their area-weighted normal), or,
+    // where a large face outweighs a fold (a ridge between faces of unequal
+    // size), their unit normals summed.
+    Vec3 area_weighted = Vec3::Zero(), unit_sum = Vec3::Zero();
+    for (std::size_t k = 0; k < n; ++k) area_weighted += spokes[k].cross(spokes[k + 1 == n ? 0 : k + 1]);
+    if (certified_along(area_weighted, spokes)) return true;
+    for (std::size_t k = 0; k < n; ++k) {
+        const Vec3 cross = spokes[k].cross(spokes[k + 1 == n ? 0 : k + 1]);
+        const double length = cross.norm();
+        if (length > 0.0) unit_sum += cross / length;
+    }
+    return certified_along(unit_sum, spokes);
 }
 
 }  // namespace morphogen
