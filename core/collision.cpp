@@ -16,7 +16,8 @@ Box3 face_box(const std::vector<Vec3>& x, const Face& f) { return Box3::of(x[f[0
 // (its fastest corner, per coordinate) a step is listed again after some
 // kMarginSteps such steps; a still or changed face gets a small share of its size.
 constexpr double kMarginSteps = 4.0;
-constexpr double kMarginOfSize = 0.05;
+constexpr double kAheadSteps = 16.0;
+constexpr double kMarginOfSize = 0.01;
 double listing_margin(const Box3& box, double step) {
     return kMarginSteps * step + kMarginOfSize * (box.hi - box.lo).maxCoeff();
 }
@@ -65,17 +66,19 @@ void CollisionGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before)
         if (!(changed_[t[0]] | changed_[t[1]] | changed_[t[2]])) continue;
         const Box3 after = face_box(x, t);
         if (listing_.box(f).contains(after)) continue;
-        double step = 0.0;
-        for (const int v : t) step = std::max(step, (x[v] - before[v]).cwiseAbs().maxCoeff());
-        const Box3 swept = after.merged(face_box(before, t));
-        listing_.relist(f, swept.inflated(listing_margin(swept, step)));
+        // Vertices keep their direction (h_i, §5.2): the box reaches as far
+        // as kAheadSteps more such moves would take the face.
+        Vec3 ahead[3];
+        for (int k = 0; k < 3; ++k) ahead[k] = x[t[k]] + kAheadSteps * (x[t[k]] - before[t[k]]);
+        const Box3 swept = after.merged(face_box(before, t)).merged(Box3::of(ahead[0], ahead[1], ahead[2]));
+        listing_.relist(f, swept.inflated(listing_margin(after, 0.0)));
     }
     listing_.refresh();
     boxes_.resize(F);
     for (int f = 0; f < F; ++f) boxes_[f] = face_box(x, faces[f]);
     triangles_.resize(F);
-    triangle_round_.resize(F, 0);
-    fan_round_.resize(V, 0);
+    triangle_known_.assign(F, 0);
+    fan_known_.assign(V, 0);
     fan_ok_.resize(V, 0);
 
     for (int round = 0; any && find_collisions(mesh); ++round) {
@@ -90,15 +93,17 @@ void CollisionGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before)
             if (scale_[v] == 0.0) ++refused;
             x[v] = scale_[v] == 0.0 ? before[v] : Vec3(before[v] + scale_[v] * (proposed_[v] - before[v]));
             changed_[v] = 1;
+            fan_known_[v] = 0;
+            mesh.for_each_neighbour(v, [&](int u) { fan_known_[u] = 0; });
         }
     }
     positions_.assign(x.begin(), x.end());
 }
 
 const IndexedTriangle& CollisionGuard::triangle(const TriMesh& mesh, int f) {
-    if (triangle_round_[f] != round_) {
+    if (!triangle_known_[f]) {
         triangles_[f] = IndexedTriangle::of(mesh.positions(), mesh.face(f));
-        triangle_round_[f] = round_;
+        triangle_known_[f] = 1;
     }
     return triangles_[f];
 }
@@ -106,9 +111,9 @@ const IndexedTriangle& CollisionGuard::triangle(const TriMesh& mesh, int f) {
 bool CollisionGuard::fan_proves_apart(const TriMesh& mesh, const int* common, int shared) {
     for (int k = 0; k < shared; ++k) {
         const int v = common[k];
-        if (fan_round_[v] != round_) {
+        if (!fan_known_[v]) {
             fan_ok_[v] = fan_certified(mesh, v, spokes_);
-            fan_round_[v] = round_;
+            fan_known_[v] = 1;
         }
         if (fan_ok_[v]) return true;
     }
@@ -119,13 +124,6 @@ bool CollisionGuard::find_collisions(const TriMesh& mesh) {
     const std::vector<Vec3>& x = mesh.positions();
     const std::vector<Face>& faces = mesh.faces();
     const int F = mesh.num_faces();
-    // Round stamps for the caches of triangles and fans (positions change
-    // between rounds only); on wrap-around the caches are cleared.
-    if (++round_ == 0) {
-        std::fill(triangle_round_.begin(), triangle_round_.end(), 0u);
-        std::fill(fan_round_.begin(), fan_round_.end(), 0u);
-        round_ = 1;
-    }
     face_active_.assign(F, 0);
     active_.clear();
     for (int f = 0; f < F; ++f) {
@@ -134,6 +132,7 @@ bool CollisionGuard::find_collisions(const TriMesh& mesh) {
             face_active_[f] = 1;
             active_.push_back(f);
             boxes_[f] = face_box(x, t);
+            triangle_known_[f] = 0;
         }
     }
     if (active_.empty()) return false;

@@ -73,17 +73,17 @@ private:
     std::vector<Face> faces_;          // the faces the listing describes
     std::vector<Vec3> positions_;      // the positions it describes (after the settle, splits)
     std::vector<Box3> boxes_;          // per face: its box now
-    std::vector<IndexedTriangle> triangles_;  // per face: as it is now, when triangle_round_ says so
-    std::vector<std::uint32_t> triangle_round_;
+    std::vector<IndexedTriangle> triangles_;  // per face: as it is now, where triangle_known_
+    std::vector<char> triangle_known_;
     std::vector<double> scale_;        // per vertex: the fraction of its step it takes
     std::vector<Vec3> proposed_;       // per vertex: where the move wanted it
     std::vector<char> changed_;        // per vertex: moved since the last check
     std::vector<char> hit_;            // per vertex: on a face that intersects
     std::vector<char> face_active_;    // per face: has a changed vertex
     std::vector<int> active_;
-    std::vector<std::uint32_t> fan_round_;  // per vertex: the round fan_ok_ was computed in
-    std::vector<char> fan_ok_;
-    std::uint32_t round_ = 0;          // counts every round of every settle
+    // Per vertex, within one settle: whether fan_ok_ holds for the fan as it
+    // is now (a vertex that moves forgets its own and its neighbours').
+    std::vector<char> fan_known_, fan_ok_;
     std::vector<Vec3> spokes_;         // fan_certified's scratch
 
     // What the grid of one step listed, for listed_for_flips: the faces and
