@@ -1,5 +1,7 @@
 #include "core/collision.hpp"
 
+#include "core/fan_certificate.hpp"
+
 #include <algorithm>
 #include <chrono>
 
@@ -9,12 +11,37 @@ namespace {
 
 Box3 face_box(const std::vector<Vec3>& x, const Face& f) { return Box3::of(x[f[0]], x[f[1]], x[f[2]]); }
 
+// How far a listing box reaches beyond the face's box (any margin is
+// correct; it only trades lookups against partners). A face moving by `step`
+// (its fastest corner, per coordinate) a step is listed again after some
+// kMarginSteps such steps; a still or changed face gets a small share of its size.
+constexpr double kMarginSteps = 4.0;
+constexpr double kAheadSteps = 16.0;
+constexpr double kMarginOfSize = 0.01;
+double listing_margin(const Box3& box, double step) {
+    return kMarginSteps * step + kMarginOfSize * (box.hi - box.lo).maxCoeff();
+}
+
 }  // namespace
+
+bool CollisionGuard::in_step(const TriMesh& mesh, const std::vector<Vec3>& before) const {
+    return listing_.size() == mesh.num_faces() && faces_ == mesh.faces() && positions_ == before;
+}
+
+void CollisionGuard::list_from_scratch(const TriMesh& mesh, const std::vector<Vec3>& before) {
+    listing_.clear();
+    faces_ = mesh.faces();
+    for (int f = 0; f < mesh.num_faces(); ++f) {
+        const Box3 box = face_box(before, faces_[f]);
+        listing_.relist(f, box.inflated(listing_margin(box, 0.0)));
+    }
+}
 
 void CollisionGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before) {
     std::vector<Vec3>& x = mesh.positions();
     const std::vector<Face>& faces = mesh.faces();
     const int V = mesh.num_vertices(), F = mesh.num_faces();
+    if (!in_step(mesh, before)) list_from_scratch(mesh, before);
     proposed_.assign(x.begin(), x.end());
     scale_.assign(V, 0.0);
     changed_.assign(V, 0);
@@ -25,32 +52,36 @@ void CollisionGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before)
             changed_[v] = 1;
             any = true;
         }
-    // The grid lists each face's box over its whole move: wherever a vertex
-    // ends between `before` and `proposed`, the face stays inside it (a
-    // rounded before + s * (proposed - before) is monotone in s), so one grid
-    // serves every round, and the split and flip phases after.
-    swept_.resize(F);
-    boxes_.resize(F);
-    double extent_sum = 0.0, extent_max = 0.0;
-    triangles_.resize(F);
+    settle_faces_.assign(faces.begin(), faces.end());
+    settle_before_.assign(before.begin(), before.end());
+    forget_late_listings();
+    flipped_.assign(F, 0);
+    // Every position a vertex takes in the rounds below lies between `before`
+    // and `proposed` (a rounded before + s * (proposed - before), s a power of
+    // two, is monotone in s), so a face stays inside the box of its move; the
+    // listing box already holds its box before the move, and is widened only
+    // where the box after the move leaves it.
     for (int f = 0; f < F; ++f) {
-        triangles_[f] = IndexedTriangle::of(x, faces[f]);
-        boxes_[f] = face_box(x, faces[f]);
-        swept_[f] = boxes_[f].merged(face_box(before, faces[f]));
-        const double extent = (swept_[f].hi - swept_[f].lo).maxCoeff();
-        extent_sum += extent;
-        extent_max = std::max(extent_max, extent);
+        const Face& t = faces[f];
+        if (!(changed_[t[0]] | changed_[t[1]] | changed_[t[2]])) continue;
+        const Box3 after = face_box(x, t);
+        if (listing_.box(f).contains(after)) continue;
+        // Vertices keep their direction (h_i, §5.2): the box reaches as far
+        // as kAheadSteps more such moves would take the face.
+        Vec3 ahead[3];
+        for (int k = 0; k < 3; ++k) ahead[k] = x[t[k]] + kAheadSteps * (x[t[k]] - before[t[k]]);
+        const Box3 swept = after.merged(face_box(before, t)).merged(Box3::of(ahead[0], ahead[1], ahead[2]));
+        listing_.relist(f, swept.inflated(listing_margin(after, 0.0)));
     }
-    // Cells about as large as a face: a face lies in a few cells and a cell
-    // holds a few faces. No box spans more than 17 cells a side.
-    double cell = std::max(extent_sum / std::max(F, 1), extent_max / 16.0);
-    if (!(cell > 0.0)) cell = 1.0;
-    grid_.build(cell, swept_);
-    stamp_.assign(F, 0);
-    query_ = 0;
-    if (!any) return;
+    listing_.refresh();
+    boxes_.resize(F);
+    for (int f = 0; f < F; ++f) boxes_[f] = face_box(x, faces[f]);
+    triangles_.resize(F);
+    triangle_known_.assign(F, 0);
+    fan_known_.assign(V, 0);
+    fan_ok_.resize(V, 0);
 
-    for (int round = 0; find_collisions(mesh); ++round) {
+    for (int round = 0; any && find_collisions(mesh); ++round) {
         // Every vertex of an intersecting face that still moves halves its
         // step, or after kHalvings rounds goes back to where it was. A set, not
         // a sequence: the order pairs were found in does not matter.
@@ -62,8 +93,31 @@ void CollisionGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before)
             if (scale_[v] == 0.0) ++refused;
             x[v] = scale_[v] == 0.0 ? before[v] : Vec3(before[v] + scale_[v] * (proposed_[v] - before[v]));
             changed_[v] = 1;
+            fan_known_[v] = 0;
+            mesh.for_each_neighbour(v, [&](int u) { fan_known_[u] = 0; });
         }
     }
+    positions_.assign(x.begin(), x.end());
+}
+
+const IndexedTriangle& CollisionGuard::triangle(const TriMesh& mesh, int f) {
+    if (!triangle_known_[f]) {
+        triangles_[f] = IndexedTriangle::of(mesh.positions(), mesh.face(f));
+        triangle_known_[f] = 1;
+    }
+    return triangles_[f];
+}
+
+bool CollisionGuard::fan_proves_apart(const TriMesh& mesh, const int* common, int shared) {
+    for (int k = 0; k < shared; ++k) {
+        const int v = common[k];
+        if (!fan_known_[v]) {
+            fan_ok_[v] = fan_certified(mesh, v, spokes_);
+            fan_known_[v] = 1;
+        }
+        if (fan_ok_[v]) return true;
+    }
+    return false;
 }
 
 bool CollisionGuard::find_collisions(const TriMesh& mesh) {
@@ -78,7 +132,7 @@ bool CollisionGuard::find_collisions(const TriMesh& mesh) {
             face_active_[f] = 1;
             active_.push_back(f);
             boxes_[f] = face_box(x, t);
-            triangles_[f] = IndexedTriangle::of(x, t);
+            triangle_known_[f] = 0;
         }
     }
     if (active_.empty()) return false;
@@ -88,27 +142,67 @@ bool CollisionGuard::find_collisions(const TriMesh& mesh) {
         for (int v : t) hit_[v] = 1;
         found = true;
     };
+    // Every pair of faces whose boxes meet, one of them active, once: the
+    // partners of an active face hold every face whose box meets its box.
     for (const int i : active_) {
-        const IndexedTriangle& ti = triangles_[i];
-        if (triangle_degenerate(ti.p[0], ti.p[1], ti.p[2])) mark(faces[i]);
-        ++query_;
+        const Face& fi = faces[i];
+        if (triangle_degenerate(x[fi[0]], x[fi[1]], x[fi[2]])) mark(fi);
         const Box3& box = boxes_[i];
-        grid_.for_each_candidate(swept_[i], [&](int j, const Box3& listed) {
-            // Each pair once: two active faces from the lower one. The listed
-            // (swept) box holds j's box now: most candidates end at the first test.
-            if (!listed.overlaps(box) || j == i || (face_active_[j] && j < i) || !first_visit(j)) return;
-            if (box.overlaps(boxes_[j]) && faces_intersect(ti, triangles_[j])) {
-                mark(faces[i]);
-                mark(faces[j]);
+        for (const int j : listing_.partners(i)) {
+            if ((face_active_[j] && j < i) || !box.overlaps(boxes_[j])) continue;
+            const Face& fj = faces[j];
+            int common[3], shared = 0;
+            for (const int v : fi)
+                if (v == fj[0] || v == fj[1] || v == fj[2]) common[shared++] = v;
+            // Faces around one vertex: most pairs, proven apart a fan at a time.
+            if (shared > 0 && fan_proves_apart(mesh, common, shared)) continue;
+            if (faces_intersect(triangle(mesh, i), triangle(mesh, j))) {
+                mark(fi);
+                mark(fj);
             }
-        });
+        }
     }
     return found;
 }
 
+void CollisionGuard::note_late_listing(int f, const Box3& box) {
+    if (late_listed_.size() <= static_cast<std::size_t>(f)) late_listed_.resize(static_cast<std::size_t>(f) + 1);
+    if (late_listed_[f].empty()) late_touched_.push_back(f);
+    late_listed_[f].push_back(box);
+}
+
+void CollisionGuard::forget_late_listings() {
+    for (const int f : late_touched_) late_listed_[f].clear();
+    late_touched_.clear();
+}
+
+bool CollisionGuard::listed_for_flips(int j, const Box3& query) const {
+    if (static_cast<std::size_t>(j) < settle_faces_.size()) {
+        const Face& t = settle_faces_[j];
+        if (face_box(proposed_, t).merged(face_box(settle_before_, t)).overlaps(query)) return true;
+    }
+    if (static_cast<std::size_t>(j) < late_listed_.size())
+        for (const Box3& box : late_listed_[j])
+            if (box.overlaps(query)) return true;
+    return false;
+}
+
 void CollisionGuard::face_changed(const TriMesh& mesh, int f) {
-    if (static_cast<std::size_t>(f) >= stamp_.size()) stamp_.resize(static_cast<std::size_t>(f) + 1, 0);
-    grid_.insert(f, face_box(mesh.positions(), mesh.face(f)));
+    const std::vector<Vec3>& x = mesh.positions();
+    // A split appends its vertex (at the face's centroid) and two faces.
+    while (positions_.size() < x.size()) positions_.push_back(x[positions_.size()]);
+    for (int h = static_cast<int>(faces_.size()); h <= f; ++h) {
+        faces_.push_back(mesh.face(h));
+        flipped_.push_back(0);
+    }
+    faces_[f] = mesh.face(f);
+    const Box3 box = face_box(x, faces_[f]);
+    note_late_listing(f, box);
+    for (int h = listing_.size(); h < f; ++h) {  // only if a caller skipped one
+        const Box3 skipped = face_box(x, faces_[h]);
+        listing_.relist(h, skipped.inflated(listing_margin(skipped, 0.0)));
+    }
+    listing_.relist(f, box.inflated(listing_margin(box, 0.0)));
 }
 
 bool CollisionGuard::allows(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g) {
@@ -127,18 +221,27 @@ bool CollisionGuard::allows_untimed(const TriMesh& mesh, int f, int g, const Fac
     if (faces_intersect(tf, tg)) return false;
     for (const IndexedTriangle* t : {&tf, &tg}) {
         const Box3 box = Box3::of(t->p[0], t->p[1], t->p[2]);
-        ++query_;
         bool hit = false;
-        grid_.for_each_candidate(box, [&](int j, const Box3& listed) {
-            // A stale listing (j changed since) may fail here; j's newer one follows.
-            if (hit || !listed.overlaps(box) || j == f || j == g || !first_visit(j)) return;
-            const IndexedTriangle tj = IndexedTriangle::of(x, mesh.face(j));
-            if (box.overlaps(Box3::of(tj.p[0], tj.p[1], tj.p[2])) && faces_intersect(*t, tj)) hit = true;
+        listing_.for_each_meeting(box, [&](int j) {
+            if (hit || j == f || j == g) return;
+            const Face& fj = mesh.face(j);
+            if (!box.overlaps(face_box(x, fj)) || (flipped_[j] && !listed_for_flips(j, box))) return;
+            if (faces_intersect(*t, IndexedTriangle::of(x, fj))) hit = true;
         });
         if (hit) return false;
     }
-    face_changed(mesh, f);
-    face_changed(mesh, g);
+    // The flip is done: the old faces stay listed as the grid of the step
+    // had them, and the new ones are listed for the rest of the pass.
+    for (const int h : {f, g}) {
+        note_late_listing(h, face_box(x, mesh.face(h)));
+        flipped_[h] = 1;
+    }
+    faces_[f] = new_f;
+    faces_[g] = new_g;
+    for (const int h : {f, g}) {
+        const Box3 box = face_box(x, faces_[h]);
+        listing_.relist(h, box.inflated(listing_margin(box, 0.0)));
+    }
     return true;
 }
 

@@ -5,6 +5,13 @@
 // a flip that would make two faces intersect is refused. Single-threaded
 // and deterministic: what it decides depends only on the mesh, never on the
 // order it visits pairs in.
+//
+// Cheap (docs/performance.md, "Collision-aware growth"): the broad phase
+// (core/face_listing.hpp) lives from step to step and is only updated where
+// a face left its listing box or changed, and pairs of faces around a vertex
+// are proven apart a fan at a time (core/fan_certificate.hpp). Neither
+// changes a decision: a pair is skipped only when it is proven apart.
+#include "core/face_listing.hpp"
 #include "core/face_pair.hpp"
 #include "core/mesh.hpp"
 #include "core/spatial_hash.hpp"
@@ -22,7 +29,8 @@ public:
     // The move of §5.2 has put `mesh` at its proposed positions; `before` holds
     // the positions it had (same vertices, no two faces intersecting then).
     // Moves vertices back towards `before` (§5.7) until no two faces
-    // intersect, then lists every face in the grid for split and flip.
+    // intersect. Any mesh may be given: one that is not the guard's last
+    // mesh (as split and flips left it) is listed from scratch.
     void settle_move(TriMesh& mesh, const std::vector<Vec3>& before);
 
     // Face f changed or was appended (a split, §5.3): lists it again.
@@ -42,29 +50,50 @@ public:
     double flip_seconds = 0.0;
 
 private:
-    // Faces with a changed vertex against every face whose grid box meets
+    // Whether the guard's listing describes this mesh (its faces, and
+    // positions `before`), as the last settle, splits and flips left it.
+    bool in_step(const TriMesh& mesh, const std::vector<Vec3>& before) const;
+    void list_from_scratch(const TriMesh& mesh, const std::vector<Vec3>& before);
+    // Faces with a changed vertex against every partner whose box meets
     // theirs; marks the vertices of intersecting pairs in hit_.
     bool find_collisions(const TriMesh& mesh);
+    // Whether the pair, known to share `shared` vertices (listed in
+    // `common`), is proven apart by a certified fan.
+    bool fan_proves_apart(const TriMesh& mesh, const int* common, int shared);
+    const IndexedTriangle& triangle(const TriMesh& mesh, int f);
     bool allows_untimed(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g);
+    // Whether the grid of the step (before this broad phase existed) would
+    // have listed face j over `query` during the flips: a flipped face was
+    // listed with its box before the flip only, and the decisions keep that.
+    bool listed_for_flips(int j, const Box3& query) const;
+    void note_late_listing(int f, const Box3& box);
+    void forget_late_listings();
 
-    SpatialHash grid_;
-    std::vector<Box3> swept_;        // per face: its box before and after the move
-    std::vector<Box3> boxes_;        // per face: its box now
-    std::vector<IndexedTriangle> triangles_;  // per face: as it is now
-    std::vector<double> scale_;      // per vertex: the fraction of its step it takes
-    std::vector<Vec3> proposed_;     // per vertex: where the move wanted it
-    std::vector<char> changed_;      // per vertex: moved since the last check
-    std::vector<char> hit_;          // per vertex: on a face that intersects
-    std::vector<char> face_active_;  // per face: has a changed vertex
+    FaceListing listing_;
+    std::vector<Face> faces_;          // the faces the listing describes
+    std::vector<Vec3> positions_;      // the positions it describes (after the settle, splits)
+    std::vector<Box3> boxes_;          // per face: its box now
+    std::vector<IndexedTriangle> triangles_;  // per face: as it is now, where triangle_known_
+    std::vector<char> triangle_known_;
+    std::vector<double> scale_;        // per vertex: the fraction of its step it takes
+    std::vector<Vec3> proposed_;       // per vertex: where the move wanted it
+    std::vector<char> changed_;        // per vertex: moved since the last check
+    std::vector<char> hit_;            // per vertex: on a face that intersects
+    std::vector<char> face_active_;    // per face: has a changed vertex
     std::vector<int> active_;
-    std::vector<std::uint32_t> stamp_;  // per face: the last query that tested it
-    std::uint32_t query_ = 0;
-    // Each query's own stamp: candidates repeat (a face lies in several cells).
-    bool first_visit(int face) {
-        if (stamp_[face] == query_) return false;
-        stamp_[face] = query_;
-        return true;
-    }
+    // Per vertex, within one settle: whether fan_ok_ holds for the fan as it
+    // is now (a vertex that moves forgets its own and its neighbours').
+    std::vector<char> fan_known_, fan_ok_;
+    std::vector<Vec3> spokes_;         // fan_certified's scratch
+
+    // What the grid of one step listed, for listed_for_flips: the faces and
+    // positions of the settle (a face's box over its move), and the boxes
+    // listed later under each face id, with the faces flipped since.
+    std::vector<Face> settle_faces_;
+    std::vector<Vec3> settle_before_;
+    std::vector<std::vector<Box3>> late_listed_;
+    std::vector<char> flipped_;
+    std::vector<int> late_touched_;
 };
 
 }  // namespace morphogen

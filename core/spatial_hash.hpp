@@ -22,6 +22,11 @@ struct Box3 {
         return {a.cwiseMin(b).cwiseMin(c), a.cwiseMax(b).cwiseMax(c)};
     }
     Box3 merged(const Box3& o) const { return {lo.cwiseMin(o.lo), hi.cwiseMax(o.hi)}; }
+    // Grown by `margin` (>= 0) on every side; rounding may grow it a little
+    // more, never less (lo - m rounds to at most lo, hi + m to at least hi).
+    Box3 inflated(double margin) const { return {lo.array() - margin, hi.array() + margin}; }
+    // Whether `o` lies inside this box (closed).
+    bool contains(const Box3& o) const { return (lo.array() <= o.lo.array()).all() && (o.hi.array() <= hi.array()).all(); }
     // Closed boxes: touching counts as overlapping (as for CGAL's boxes).
     // Without short-circuits: the answer is a coin toss for a grid's
     // candidates, and one branch instead of six mispredicts less.
@@ -38,6 +43,9 @@ public:
     void build(double cell_size, const std::vector<Box3>& boxes);
     // Lists `box` as `id` too.
     void insert(int id, const Box3& box);
+    // Entries listed by build(), and by insert() since.
+    std::size_t built_entries() const { return entries_.size(); }
+    std::size_t late_entries() const { return late_.size(); }
 
     // Calls fn(id, listed_box) for every entry in the buckets of the cells
     // `box` overlaps. A bucket may also hold entries of other cells (hash
