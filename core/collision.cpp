@@ -52,10 +52,6 @@ void CollisionGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before)
             changed_[v] = 1;
             any = true;
         }
-    settle_faces_.assign(faces.begin(), faces.end());
-    settle_before_.assign(before.begin(), before.end());
-    forget_late_listings();
-    flipped_.assign(F, 0);
     // Every position a vertex takes in the rounds below lies between `before`
     // and `proposed` (a rounded before + s * (proposed - before), s a power of
     // two, is monotone in s), so a face stays inside the box of its move; the
@@ -66,8 +62,11 @@ void CollisionGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before)
         if (!(changed_[t[0]] | changed_[t[1]] | changed_[t[2]])) continue;
         const Box3 after = face_box(x, t);
         if (listing_.box(f).contains(after)) continue;
-        // Vertices keep their direction (h_i, §5.2): the box reaches as far
-        // as kAheadSteps more such moves would take the face.
+        // In the paper's model vertices keep their direction (h_i, §5.2): the
+        // box reaches as far as kAheadSteps more such moves would take the
+        // face. (In the branching mode, §5.8, directions turn: a face then
+        // leaves its box sooner and is listed again; the reach only sizes
+        // the box, the containment test above decides.)
         Vec3 ahead[3];
         for (int k = 0; k < 3; ++k) ahead[k] = x[t[k]] + kAheadSteps * (x[t[k]] - before[t[k]]);
         const Box3 swept = after.merged(face_box(before, t)).merged(Box3::of(ahead[0], ahead[1], ahead[2]));
@@ -165,39 +164,15 @@ bool CollisionGuard::find_collisions(const TriMesh& mesh) {
     return found;
 }
 
-void CollisionGuard::note_late_listing(int f, const Box3& box) {
-    if (late_listed_.size() <= static_cast<std::size_t>(f)) late_listed_.resize(static_cast<std::size_t>(f) + 1);
-    if (late_listed_[f].empty()) late_touched_.push_back(f);
-    late_listed_[f].push_back(box);
-}
-
-void CollisionGuard::forget_late_listings() {
-    for (const int f : late_touched_) late_listed_[f].clear();
-    late_touched_.clear();
-}
-
-bool CollisionGuard::listed_for_flips(int j, const Box3& query) const {
-    if (static_cast<std::size_t>(j) < settle_faces_.size()) {
-        const Face& t = settle_faces_[j];
-        if (face_box(proposed_, t).merged(face_box(settle_before_, t)).overlaps(query)) return true;
-    }
-    if (static_cast<std::size_t>(j) < late_listed_.size())
-        for (const Box3& box : late_listed_[j])
-            if (box.overlaps(query)) return true;
-    return false;
-}
-
 void CollisionGuard::face_changed(const TriMesh& mesh, int f) {
     const std::vector<Vec3>& x = mesh.positions();
     // A split appends its vertex (at the face's centroid) and two faces.
     while (positions_.size() < x.size()) positions_.push_back(x[positions_.size()]);
     for (int h = static_cast<int>(faces_.size()); h <= f; ++h) {
         faces_.push_back(mesh.face(h));
-        flipped_.push_back(0);
     }
     faces_[f] = mesh.face(f);
     const Box3 box = face_box(x, faces_[f]);
-    note_late_listing(f, box);
     for (int h = listing_.size(); h < f; ++h) {  // only if a caller skipped one
         const Box3 skipped = face_box(x, faces_[h]);
         listing_.relist(h, skipped.inflated(listing_margin(skipped, 0.0)));
@@ -225,17 +200,13 @@ bool CollisionGuard::allows_untimed(const TriMesh& mesh, int f, int g, const Fac
         listing_.for_each_meeting(box, [&](int j) {
             if (hit || j == f || j == g) return;
             const Face& fj = mesh.face(j);
-            if (!box.overlaps(face_box(x, fj)) || (flipped_[j] && !listed_for_flips(j, box))) return;
+            if (!box.overlaps(face_box(x, fj))) return;
             if (faces_intersect(*t, IndexedTriangle::of(x, fj))) hit = true;
         });
         if (hit) return false;
     }
-    // The flip is done: the old faces stay listed as the grid of the step
-    // had them, and the new ones are listed for the rest of the pass.
-    for (const int h : {f, g}) {
-        note_late_listing(h, face_box(x, mesh.face(h)));
-        flipped_[h] = 1;
-    }
+    // The flip is done: the new faces are listed for the rest of the pass,
+    // so a later flip is tested against them as they are (§5.7).
     faces_[f] = new_f;
     faces_[g] = new_g;
     for (const int h : {f, g}) {

@@ -62,12 +62,6 @@ private:
     bool fan_proves_apart(const TriMesh& mesh, const int* common, int shared);
     const IndexedTriangle& triangle(const TriMesh& mesh, int f);
     bool allows_untimed(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g);
-    // Whether the grid of the step (before this broad phase existed) would
-    // have listed face j over `query` during the flips: a flipped face was
-    // listed with its box before the flip only, and the decisions keep that.
-    bool listed_for_flips(int j, const Box3& query) const;
-    void note_late_listing(int f, const Box3& box);
-    void forget_late_listings();
 
     FaceListing listing_;
     std::vector<Face> faces_;          // the faces the listing describes
@@ -85,15 +79,6 @@ private:
     // is now (a vertex that moves forgets its own and its neighbours').
     std::vector<char> fan_known_, fan_ok_;
     std::vector<Vec3> spokes_;         // fan_certified's scratch
-
-    // What the grid of one step listed, for listed_for_flips: the faces and
-    // positions of the settle (a face's box over its move), and the boxes
-    // listed later under each face id, with the faces flipped since.
-    std::vector<Face> settle_faces_;
-    std::vector<Vec3> settle_before_;
-    std::vector<std::vector<Box3>> late_listed_;
-    std::vector<char> flipped_;
-    std::vector<int> late_touched_;
 };
 
 }  // namespace morphogen

@@ -19,6 +19,12 @@ GrowthParams with(GrowthParams params, Collisions collisions) {
     return params;
 }
 
+// The same settings in the branching mode (docs/algorithm.md §5.8).
+GrowthParams branching(GrowthParams params) {
+    params.mode = GrowthMode::branching;
+    return params;
+}
+
 bool grows_self_intersecting(const Network& network, const GrowthParams& params, GrowthWorkspace& workspace) {
     const Seed seed = make_seed(params.seed_mesh, params.seed_radius);
     return mesh_self_intersects(Grower(network, params).grow(seed, workspace).mesh.view());
@@ -99,5 +105,43 @@ TEST_CASE("1000 random genomes at the default growth settings never self-interse
 TEST_CASE("the same 1000 genomes self-intersect when collisions are allowed", "[.][collision-slow]") {
     const int allowed = count_self_intersecting(with(GrowthParams{}, Collisions::allow), 1, 1000);
     WARN(allowed << " of 1000 genomes self-intersect at the default settings when collisions are allowed");
+    CHECK(allowed > 0);
+}
+
+TEST_CASE("1000 random genomes in the branching mode, collisions prevented, never self-intersect", "[collision][branching]") {
+    GrowthParams params;
+    params.steps = 60;
+    params.max_vertices = 1500;
+    const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
+    CHECK(count_self_intersecting(with(branching(params), Collisions::prevent), 1 + 250 * block, 250) == 0);
+}
+
+TEST_CASE("the check can fail in the branching mode too", "[collision][branching]") {
+    GrowthParams params;
+    params.steps = 60;
+    params.max_vertices = 1500;
+    const int allowed = count_self_intersecting(with(branching(params), Collisions::allow), 1, 1000);
+    WARN(allowed << " of 1000 genomes self-intersect in the branching mode when collisions are allowed (60 steps)");
+    CHECK(allowed > 0);
+}
+
+TEST_CASE("hostile genomes in the branching mode, collisions prevented, never self-intersect", "[collision][branching]") {
+    const GrowthParams params = branching(GrowthParams{});
+    GrowthWorkspace workspace;
+    // Saturated: every vertex grows (w3 = 1) and turns toward its normal, up
+    // and apart at the full rate, as far as speed and budget allow.
+    CHECK_FALSE(grows_self_intersecting(saturated_genome(), with(params, Collisions::prevent), workspace));
+    CHECK(count_self_intersecting(with(params, Collisions::prevent), 1, 8, 20.0) == 0);
+}
+
+TEST_CASE("1000 random genomes in the branching mode at the default growth settings never self-intersect",
+          "[.][collision-slow]") {
+    const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
+    CHECK(count_self_intersecting(with(branching(GrowthParams{}), Collisions::prevent), 1 + 250 * block, 250) == 0);
+}
+
+TEST_CASE("the same 1000 genomes in the branching mode self-intersect when collisions are allowed", "[.][collision-slow]") {
+    const int allowed = count_self_intersecting(with(branching(GrowthParams{}), Collisions::allow), 1, 1000);
+    WARN(allowed << " of 1000 genomes self-intersect in the branching mode at the default settings when allowed");
     CHECK(allowed > 0);
 }
