@@ -158,7 +158,7 @@ TEST_CASE("command-line overrides are checked like keys and recorded", "[app][co
 }
 
 TEST_CASE("shipped configs and the default config are valid under schema.json", "[app][config][schema]") {
-    for (const char* name : {"canopy.json", "quick.json", "map_elites.json"}) {
+    for (const char* name : {"canopy.json", "quick.json", "map_elites.json", "tree.json"}) {
         INFO(name);
         const auto path = source_dir / "configs" / name;
         const json document = json::parse(read_text(path));
