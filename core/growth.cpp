@@ -290,7 +290,7 @@ void Grower::step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* ti
     }
     if (params_.mode == GrowthMode::branching) {
         branch(state, workspace);
-        clock.lap(&PhaseTimes::move);
+        clock.lap(&PhaseTimes::move);  // counted with the move it steers (bench's "move")
     }
     // growth.collisions "prevent" (docs/algorithm.md §5.7): the move is
     // settled, splits are listed and flips guarded, so no two faces intersect.
