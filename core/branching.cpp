@@ -27,10 +27,11 @@ void update_activity(std::span<std::uint8_t> active, std::span<const double> out
 void steer_directions(std::span<Vec3> directions, const TriMesh& mesh, std::span<const double> outputs, int N,
                       std::span<const int> neighbour_offsets, std::span<const int> neighbours, double turn_rate,
                       std::vector<Vec3>& scratch) {
-    const std::vector<Vec3> normals = vertex_normals(mesh.view());
+    // scratch[i] holds vertex i's normal, then its new direction (each normal
+    // serves its own vertex only); the directions are written at the end, as
+    // every vertex turns from the old ones.
+    vertex_normals(mesh.view(), scratch);
     const Vec3 up(0.0, 0.0, 1.0);
-    // New directions go to scratch first: every vertex turns from the old ones.
-    scratch.resize(directions.size());
     for (std::size_t i = 0; i < directions.size(); ++i) {
         const Vec3& h = directions[i];
         Vec3 mean = Vec3::Zero();
@@ -39,7 +40,7 @@ void steer_directions(std::span<Vec3> directions, const TriMesh& mesh, std::span
         if (last > first) mean /= static_cast<double>(last - first);
         const Vec3 apart = unit_or_zero(h - mean);
         const double* w = outputs.data() + i * static_cast<std::size_t>(N);
-        const Vec3 target = (2.0 * w[kTurnNormalChannel] - 1.0) * normals[i] + (2.0 * w[kTurnUpChannel] - 1.0) * up +
+        const Vec3 target = (2.0 * w[kTurnNormalChannel] - 1.0) * scratch[i] + (2.0 * w[kTurnUpChannel] - 1.0) * up +
                             (2.0 * w[kTurnApartChannel] - 1.0) * apart;
         const Vec3 turned = h + turn_rate * target;
         const double length = turned.norm();

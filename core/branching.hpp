@@ -29,7 +29,8 @@ void update_activity(std::span<std::uint8_t> active, std::span<const double> out
 // with n_i the unit area-weighted vertex normal and u_i the unit vector of
 // h_i minus the mean of its neighbours' h (each 0 where its length is at most
 // 1e-12); a sum of length at most 1e-12 leaves h_i as it was. The neighbour
-// lists are CSR (offsets V + 1, as Grower builds them). `scratch` is reused.
+// lists are CSR (offsets V + 1, as Grower builds them). `scratch` is reused
+// (no allocation once it has grown).
 void steer_directions(std::span<Vec3> directions, const TriMesh& mesh, std::span<const double> outputs, int N,
                       std::span<const int> neighbour_offsets, std::span<const int> neighbours, double turn_rate,
                       std::vector<Vec3>& scratch);

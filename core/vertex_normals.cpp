@@ -5,7 +5,13 @@
 namespace morphogen {
 
 std::vector<Vec3> vertex_normals(MeshView mesh) {
-    std::vector<Vec3> normals(mesh.positions.size(), Vec3::Zero());
+    std::vector<Vec3> normals;
+    vertex_normals(mesh, normals);
+    return normals;
+}
+
+void vertex_normals(MeshView mesh, std::vector<Vec3>& normals) {
+    normals.assign(mesh.positions.size(), Vec3::Zero());
     for (const Face& f : mesh.faces) {
         const Vec3 n = (mesh.positions[f[1]] - mesh.positions[f[0]])
                            .cross(mesh.positions[f[2]] - mesh.positions[f[0]]);
@@ -15,7 +21,6 @@ std::vector<Vec3> vertex_normals(MeshView mesh) {
         const double len = n.norm();
         n = len > 0 && std::isfinite(len) ? Vec3(n / len) : Vec3::Zero();
     }
-    return normals;
 }
 
 }  // namespace morphogen

@@ -10,5 +10,7 @@ namespace morphogen {
 // stores; exactly zero where a vertex has none (no faces, zero area or
 // overflow), where writers store "up". Faces must index existing vertices.
 std::vector<Vec3> vertex_normals(MeshView mesh);
+// The same into `normals` (resized), reusing its storage: for growth steps.
+void vertex_normals(MeshView mesh, std::vector<Vec3>& normals);
 
 }  // namespace morphogen
