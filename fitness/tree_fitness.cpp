@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace morphogen {
 
@@ -15,9 +14,7 @@ TreeScore tree_score(MeshView mesh, const TreeFitnessParams& params) {
     // A plant must stand on the ground: one that floats has no trunk, however
     // its sections look. An undefined ratio (no height, nothing above the
     // middle) is no trunk either.
-    double lowest = std::numeric_limits<double>::infinity();
-    for (const Vec3& p : mesh.positions) lowest = std::min(lowest, p.z());
-    s.rooted = lowest <= params.root_height;
+    s.rooted = sections.zmin <= params.root_height;
     s.trunk_factor = !s.rooted || std::isnan(sections.trunk_ratio) ? 0.0
                      : sections.trunk_ratio <= params.trunk_target
                          ? 1.0

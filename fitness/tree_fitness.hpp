@@ -21,7 +21,7 @@ struct TreeFitnessParams {
     double trunk_target = 0.25;  // trunk_ratio at or below which T = 1, > 0
     int loops_target = 3;        // upper_loops at or above which B = 1, >= 1
     double material_cost = 0.05; // per unit of enclosed volume, >= 0
-    double root_height = 0.1;    // a plant whose lowest vertex is higher floats: no trunk
+    double root_height = 0.1;    // a plant whose lowest vertex (of a face) is higher floats: no trunk
 };
 
 struct TreeScore {

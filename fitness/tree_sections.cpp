@@ -114,6 +114,7 @@ TreeSections tree_sections(MeshView mesh, int sections) {
             out.upper_loops = std::max(out.upper_loops, s.loops);
         }
     }
+    out.zmin = zmin;
     out.trunk_ratio = any_low && high_width > 0.0 ? low_width / high_width : std::nan("");
     return out;
 }

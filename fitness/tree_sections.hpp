@@ -24,6 +24,7 @@ namespace morphogen {
 struct TreeSections {
     double trunk_ratio = 0.0;  // NaN when undefined (no height, N < 2, or a zero upper width)
     int upper_loops = 0;
+    double zmin = 0.0;  // the lowest z of a vertex used by a face, where the sections start
 };
 
 // Throws std::invalid_argument for a malformed mesh, no faces, or sections < 1.
