@@ -22,6 +22,12 @@ double listing_margin(const Box3& box, double step) {
     return kMarginSteps * step + kMarginOfSize * (box.hi - box.lo).maxCoeff();
 }
 
+bool share_a_vertex(const Face& a, const Face& b) {
+    for (const int v : a)
+        if (v == b[0] || v == b[1] || v == b[2]) return true;
+    return false;
+}
+
 }  // namespace
 
 bool CollisionGuard::in_step(const TriMesh& mesh, const std::vector<Vec3>& before) const {
@@ -72,13 +78,17 @@ void CollisionGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before)
         const Box3 swept = after.merged(face_box(before, t)).merged(Box3::of(ahead[0], ahead[1], ahead[2]));
         listing_.relist(f, swept.inflated(listing_margin(after, 0.0)));
     }
-    listing_.refresh();
+    // Pairs sharing a vertex are met around the vertex (find_collisions);
+    // whether a pair shares one changes only when a face changes, and a
+    // changed face is relisted.
+    listing_.refresh([this](int f, int g) { return !share_a_vertex(faces_[f], faces_[g]); });
     boxes_.resize(F);
     for (int f = 0; f < F; ++f) boxes_[f] = face_box(x, faces[f]);
     triangles_.resize(F);
     triangle_known_.assign(F, 0);
     fan_known_.assign(V, 0);
     fan_ok_.resize(V, 0);
+    fan_stamp_.resize(V, 0);
 
     for (int round = 0; any && find_collisions(mesh); ++round) {
         // Every vertex of an intersecting face that still moves halves its
@@ -107,16 +117,25 @@ const IndexedTriangle& CollisionGuard::triangle(const TriMesh& mesh, int f) {
     return triangles_[f];
 }
 
-bool CollisionGuard::fan_proves_apart(const TriMesh& mesh, const int* common, int shared) {
-    for (int k = 0; k < shared; ++k) {
-        const int v = common[k];
-        if (!fan_known_[v]) {
-            fan_ok_[v] = fan_certified(mesh, v, spokes_);
-            fan_known_[v] = 1;
-        }
-        if (fan_ok_[v]) return true;
+bool CollisionGuard::fan_ok(const TriMesh& mesh, int v) {
+    if (!fan_known_[v]) {
+        fan_ok_[v] = fan_certified(mesh, v, spokes_);
+        fan_known_[v] = 1;
     }
-    return false;
+    return fan_ok_[v];
+}
+
+void CollisionGuard::collect_fan(const TriMesh& mesh, int v, int some_face) {
+    const Face& t = mesh.face(some_face);
+    const int k = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+    const int start = 3 * some_face + k;  // a half-edge leaving v
+    fan_faces_.clear();
+    int h = start;
+    do {
+        fan_faces_.push_back(TriMesh::face_of(h));
+        const int into_v = h - h % 3 + (h % 3 + 2) % 3;  // the half-edge before h, in h's face
+        h = mesh.opposite(into_v);
+    } while (h != start);
 }
 
 bool CollisionGuard::find_collisions(const TriMesh& mesh) {
@@ -137,28 +156,51 @@ bool CollisionGuard::find_collisions(const TriMesh& mesh) {
     if (active_.empty()) return false;
     hit_.assign(x.size(), 0);
     bool found = false;
-    const auto mark = [&](const Face& t) {
-        for (int v : t) hit_[v] = 1;
-        found = true;
+    const auto test = [&](int f, int g) {
+        if (faces_intersect(triangle(mesh, f), triangle(mesh, g))) {
+            for (const int v : faces[f]) hit_[v] = 1;
+            for (const int v : faces[g]) hit_[v] = 1;
+            found = true;
+        }
     };
-    // Every pair of faces whose boxes meet, one of them active, once: the
-    // partners of an active face hold every face whose box meets its box.
+    if (++round_stamp_ == 0) {  // wrapped: every stamp is stale
+        std::fill(fan_stamp_.begin(), fan_stamp_.end(), 0u);
+        round_stamp_ = 1;
+    }
+    // Every pair with an active face whose boxes meet, once, unless a fan
+    // around a shared vertex is certified.
     for (const int i : active_) {
         const Face& fi = faces[i];
-        if (triangle_degenerate(x[fi[0]], x[fi[1]], x[fi[2]])) mark(fi);
+        // A certified fan has no degenerate face.
+        const bool certified = fan_ok(mesh, fi[0]) | fan_ok(mesh, fi[1]) | fan_ok(mesh, fi[2]);
+        if (!certified && triangle_degenerate(x[fi[0]], x[fi[1]], x[fi[2]])) {
+            for (const int v : fi) hit_[v] = 1;
+            found = true;
+        }
+        // Pairs sharing v (their boxes meet at v), from v's fan, once a round.
+        for (const int v : fi) {
+            if (fan_ok(mesh, v) || fan_stamp_[v] == round_stamp_) continue;
+            fan_stamp_[v] = round_stamp_;
+            collect_fan(mesh, v, i);
+            const std::size_t n = fan_faces_.size();
+            for (std::size_t a = 0; a < n; ++a)
+                for (std::size_t b = a + 1; b < n; ++b) {
+                    const int f = fan_faces_[a], g = fan_faces_[b];
+                    if (!face_active_[f] && !face_active_[g]) continue;
+                    // Sharing the edge v-w too: proven by w's fan, or met
+                    // again (and tested) around w where w < v.
+                    int w = -1;
+                    for (const int u : faces[f])
+                        if (u != v && (u == faces[g][0] || u == faces[g][1] || u == faces[g][2])) w = u;
+                    if (w >= 0 && (w < v || fan_ok(mesh, w))) continue;
+                    test(f, g);
+                }
+        }
+        // Pairs sharing no vertex: the partners.
         const Box3& box = boxes_[i];
         for (const int j : listing_.partners(i)) {
             if ((face_active_[j] && j < i) || !box.overlaps(boxes_[j])) continue;
-            const Face& fj = faces[j];
-            int common[3], shared = 0;
-            for (const int v : fi)
-                if (v == fj[0] || v == fj[1] || v == fj[2]) common[shared++] = v;
-            // Faces around one vertex: most pairs, proven apart a fan at a time.
-            if (shared > 0 && fan_proves_apart(mesh, common, shared)) continue;
-            if (faces_intersect(triangle(mesh, i), triangle(mesh, j))) {
-                mark(fi);
-                mark(fj);
-            }
+            test(i, j);
         }
     }
     return found;

@@ -8,9 +8,11 @@
 //
 // Cheap (docs/performance.md, "Collision-aware growth"): the broad phase
 // (core/face_listing.hpp) lives from step to step and is only updated where
-// a face left its listing box or changed, and pairs of faces around a vertex
-// are proven apart a fan at a time (core/fan_certificate.hpp). Neither
-// changes a decision: a pair is skipped only when it is proven apart.
+// a face left its listing box or changed, and holds only pairs sharing no
+// vertex; pairs of faces around a vertex are proven apart a fan at a time
+// (core/fan_certificate.hpp), and tested around the vertex where its fan is
+// not certified. Neither changes a decision: a pair is skipped only when it
+// is proven apart.
 #include "core/face_listing.hpp"
 #include "core/face_pair.hpp"
 #include "core/mesh.hpp"
@@ -54,12 +56,15 @@ private:
     // positions `before`), as the last settle, splits and flips left it.
     bool in_step(const TriMesh& mesh, const std::vector<Vec3>& before) const;
     void list_from_scratch(const TriMesh& mesh, const std::vector<Vec3>& before);
-    // Faces with a changed vertex against every partner whose box meets
-    // theirs; marks the vertices of intersecting pairs in hit_.
+    // Every pair of faces, one with a changed vertex, whose boxes meet and
+    // that no certified fan proves apart, tested; marks the vertices of
+    // intersecting pairs in hit_. Pairs sharing a vertex are found around
+    // the vertex, the others in the partner lists (which hold only those).
     bool find_collisions(const TriMesh& mesh);
-    // Whether the pair, known to share `shared` vertices (listed in
-    // `common`), is proven apart by a certified fan.
-    bool fan_proves_apart(const TriMesh& mesh, const int* common, int shared);
+    // Whether v's fan is certified at the positions of this round.
+    bool fan_ok(const TriMesh& mesh, int v);
+    // The faces around v, in ring order, into fan_faces_.
+    void collect_fan(const TriMesh& mesh, int v, int some_face);
     const IndexedTriangle& triangle(const TriMesh& mesh, int f);
     bool allows_untimed(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g);
 
@@ -79,6 +84,9 @@ private:
     // is now (a vertex that moves forgets its own and its neighbours').
     std::vector<char> fan_known_, fan_ok_;
     std::vector<Vec3> spokes_;         // fan_certified's scratch
+    std::vector<int> fan_faces_;       // collect_fan's output
+    std::vector<unsigned> fan_stamp_;  // per vertex: the round its fan's pairs were tested
+    unsigned round_stamp_ = 0;
 };
 
 }  // namespace morphogen

@@ -50,7 +50,7 @@ void FaceListing::unlink(int f, int g) {
     list.pop_back();
 }
 
-void FaceListing::refresh() {
+void FaceListing::refresh(const std::function<bool(int, int)>& keep) {
     if (pending_.empty()) return;
     // A grid full of stale entries (or none yet) is built again from the
     // listing boxes; otherwise the relisted ones are already in it.
@@ -63,7 +63,7 @@ void FaceListing::refresh() {
     // Each pair once: a pending face found by a lower pending one was added then.
     for (const int f : pending_)
         for_each_meeting(boxes_[f], [&](int g) {
-            if (g == f || (is_pending_[g] && g < f)) return;
+            if (g == f || (is_pending_[g] && g < f) || !keep(f, g)) return;
             partners_[f].push_back(g);
             partners_[g].push_back(f);
         });

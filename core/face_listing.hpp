@@ -2,8 +2,9 @@
 // The collision guard's broad phase kept from step to step (docs/algorithm.md
 // §5.7). Every face f has a listing box L_f that holds f's box now (the
 // caller keeps it so: a face whose box leaves L_f is listed again); two faces
-// whose listing boxes meet are partners. So two faces whose boxes meet are
-// always partners, and a step only walks partner lists: no grid is built,
+// whose listing boxes meet are partners, unless the owner's rule `keep`
+// (given to refresh) leaves the pair out. So two faces whose boxes meet are
+// partners or left out by the rule, and a step only walks partner lists: no grid is built,
 // and a face is looked up in the grid only when it is listed again (its
 // box left L_f by the margin the caller gave it, or the face changed).
 //
@@ -14,6 +15,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -28,11 +30,14 @@ public:
     // Gives face f (an existing one, or f == size(): a new one) the listing
     // box `box`. Its partners are stale until refresh().
     void relist(int f, const Box3& box);
-    // Recomputes the partners of every face relisted since the last refresh.
-    void refresh();
+    // Recomputes the partners of every face relisted since the last refresh,
+    // each pair kept only where keep(f, g) holds (a rule that may change for
+    // a pair only when one of its faces is relisted).
+    void refresh(const std::function<bool(int, int)>& keep);
 
     const Box3& box(int f) const { return boxes_[f]; }
-    // Valid after refresh(): every face whose listing box meets f's.
+    // Valid after refresh(): every face whose listing box meets f's (and
+    // that the rule keeps).
     std::span<const int> partners(int f) const { return partners_[f]; }
 
     // Calls fn(g) once for every face g whose listing box meets `query`
