@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# The trees of docs/results.md ("Trees"): configs/tree.json on several seeds,
+# each best checked by scripts/tree_shape.py, the bests drawn side by side;
+# then configs/tree_map.json (MAP-Elites over trunk_ratio x height) on the
+# first seed, its map of elites drawn.
+#
+# usage: scripts/trees.sh [SEEDS...]     (default 1 2 3; results in out/trees/, OUT=... to change)
+#   MAP=0 skips the MAP-Elites run; THREADS (default 1) threads per run.
+#
+# A run whose history.csv is complete is not run again, and one that was
+# stopped is resumed (to the same bytes as an unbroken run), so the script
+# can be stopped and re-run; a run whose config changed is started again.
+# Cost: 6,100 births a run, 30-60 min of one core each (the collision guard
+# is most of it, docs/performance.md).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+seeds=("$@")
+[ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3)
+exe=build/morphogen
+out=${OUT:-out/trees}
+threads=${THREADS:-1}
+mkdir -p "$out"
+
+# Whether RUN's history.csv has its header and ROWS generations.
+complete() { [ -f "$1/history.csv" ] && [ "$(wc -l < "$1/history.csv")" -eq $(( $2 + 1 )) ]; }
+
+# run CONFIG SEED DIR: evolve, resume, or nothing, as the directory says.
+run() {
+  local config=$1 seed=$2 dir=$3
+  local generations
+  generations=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["run"]["generations"])' "$config")
+  if cmp -s "$config" "$dir.json" && complete "$dir" $(( generations + 1 )); then return; fi
+  if cmp -s "$config" "$dir.json" && [ -f "$dir/checkpoint.json" ]; then
+    echo "$(date -u +%H:%M:%S) $exe resume $dir" >&2
+    "$exe" resume "$dir" --threads "$threads" --no-report >> "$dir.log" 2>&1
+  else
+    echo "$(date -u +%H:%M:%S) $exe evolve $config --seed $seed --out $dir" >&2
+    cp "$config" "$dir.json"  # what this run was started from
+    "$exe" evolve "$config" --seed "$seed" --out "$dir" --threads "$threads" --force --no-report > "$dir.log" 2>&1
+  fi
+}
+
+bests=()
+for s in "${seeds[@]}"; do
+  run configs/tree.json "$s" "$out/tree-$s"
+  last=$(ls "$out/tree-$s"/best/gen_*.obj | sort | tail -n 1)
+  bests+=("$last")
+done
+python3 scripts/tree_shape.py "${bests[@]}" | tee "$out/tree_shape.csv"
+"$exe" render "${bests[@]}" --columns "${#bests[@]}" -o "$out/trees.png"
+echo "contact sheet: $out/trees.png" >&2
+
+if [ "${MAP:-1}" != 0 ]; then
+  s=${seeds[0]}
+  run configs/tree_map.json "$s" "$out/tree-map-$s"
+  "$exe" archive "$out/tree-map-$s" --png "$out/tree-map-$s.png" > /dev/null
+  echo "map of elites: $out/tree-map-$s.png" >&2
+fi
