@@ -225,7 +225,7 @@ TEST_CASE("the branching mode with collisions prevented and the tree fitness: th
     TinyRun t("evolve-branching", 4);
     write_text(t.config, R"({"network": {"outputs": 7, "hidden": [6]},
  "growth": {"steps": 30, "max_vertices": 300, "mode": "branching", "turn_rate": 0.2, "collisions": "prevent"},
- "fitness": {"type": "tree", "min_height": 1, "spacing": 0.25},
+ "fitness": {"type": "tree", "min_height": 1, "spacing": 0.25, "trunk_power": 2},
  "evolution": {"population": 8, "lag": 5, "mutation_rate": 0.2},
  "run": {"generations": 4, "seed": 7, "export_every": 0}})");
     for (int threads : {1, 2, 8}) REQUIRE(t.evolve(numbered(t.tmp.path / "t", threads), arg("--threads", threads)).code == 0);
@@ -234,6 +234,7 @@ TEST_CASE("the branching mode with collisions prevented and the tree fitness: th
     const auto config = nlohmann::json::parse(read_text(t.tmp.path / "t1" / "config.json"));
     CHECK(config["growth"]["mode"] == "branching");
     CHECK(config["fitness"]["trunk_target"] == 0.25);
+    CHECK(config["fitness"]["trunk_power"] == 2.0);
     // Not every genome scores the same: the search has something to select.
     std::istringstream lineage(read_text(t.tmp.path / "t1" / "lineage.csv"));
     std::set<std::string> scores;

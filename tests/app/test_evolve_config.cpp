@@ -226,8 +226,8 @@ TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]
             json document = json::object();
             document[section][key] = value;
             if (section == "fitness" && (key == "spacing" || key == "min_height")) document[section]["type"] = "light";
-            if (section == "fitness" && (key == "trunk_target" || key == "loops_target" || key == "material_cost" ||
-                                         key == "root_height"))
+            if (section == "fitness" && (key == "trunk_target" || key == "trunk_power" || key == "loops_target" ||
+                                         key == "material_cost" || key == "root_height"))
                 document[section]["type"] = "tree";
             if (section == "growth" && key == "turn_rate") document[section]["mode"] = "branching";
             return document;

@@ -50,6 +50,12 @@ TEST_CASE("tree fitness: the factors saturate at their targets", "[fitness][tree
     const TreeScore s = tree_score(tree.view(), p);
     CHECK(s.trunk_factor == Approx(0.5));
     CHECK(s.score == Approx(12.0 * 0.5 * 0.5 - 0.05 * 130.0));
+    p.trunk_power = 3.0;  // (0.05 / 0.1)^3
+    CHECK(tree_score(tree.view(), p).trunk_factor == Approx(0.125));
+    p.trunk_target = 0.2;  // at or below the target the power does not matter
+    CHECK(tree_score(tree.view(), p).trunk_factor == 1.0);
+    p.trunk_target = 0.05;
+    p.trunk_power = 1.0;
     p.material_cost = 0.0;
     p.light.min_height = 21.0;  // above everything: no light, no score
     CHECK(tree_score(tree.view(), p).score == 0.0);
@@ -98,6 +104,7 @@ TEST_CASE("tree fitness: config keys, defaults and errors", "[fitness][tree][con
     CHECK(resolved["loops_target"] == 3);
     CHECK(resolved["material_cost"] == 0.05);
     CHECK(resolved["root_height"] == 0.1);
+    CHECK_FALSE(resolved.contains("trunk_power"));  // 1 is left out: older runs resolve as they did
     CHECK(resolved["min_height"] == 6.0);
     CHECK(resolved["elevations_deg"] == json::parse("[90.0, 45.0]"));
 
@@ -110,6 +117,7 @@ TEST_CASE("tree fitness: config keys, defaults and errors", "[fitness][tree][con
     };
     CHECK(first_issue(R"({"type": "tree", "trunk_target": 0})").starts_with("fitness.trunk_target"));
     CHECK(first_issue(R"({"type": "tree", "loops_target": 0})").starts_with("fitness.loops_target"));
+    CHECK(first_issue(R"({"type": "tree", "trunk_power": 0.5})").starts_with("fitness.trunk_power"));
     CHECK(first_issue(R"({"type": "tree", "material_cost": -1})").starts_with("fitness.material_cost"));
     CHECK(first_issue(R"({"type": "tree", "height": 10})").starts_with("fitness.height: unknown key"));
     CHECK(first_issue(R"({"type": "tree", "elevations_deg": []})").starts_with("fitness.elevations_deg"));
