@@ -18,8 +18,7 @@ TreeScore tree_score(MeshView mesh, const TreeFitnessParams& params) {
     s.trunk_factor = !s.rooted || std::isnan(sections.trunk_ratio) ? 0.0
                      : sections.trunk_ratio <= params.trunk_target
                          ? 1.0
-                     : params.trunk_power == 1.0 ? params.trunk_target / sections.trunk_ratio
-                                                 : std::pow(params.trunk_target / sections.trunk_ratio, params.trunk_power);
+                         : std::pow(params.trunk_target / sections.trunk_ratio, params.trunk_power);
     s.branch_factor = static_cast<double>(std::min(sections.upper_loops, params.loops_target)) / params.loops_target;
     s.volume = mesh_volume(mesh);
     // Light is the costly part: skip it when it cannot count.
