@@ -4,9 +4,10 @@
 // caller keeps it so: a face whose box leaves L_f is listed again); two faces
 // whose listing boxes meet are partners, unless the owner's rule `keep`
 // (given to refresh) leaves the pair out. So two faces whose boxes meet are
-// partners or left out by the rule, and a step only walks partner lists: no grid is built,
-// and a face is looked up in the grid only when it is listed again (its
-// box left L_f by the margin the caller gave it, or the face changed).
+// partners or left out by the rule, and a step only walks partner lists: no
+// grid is built, and a face is looked up in the grid only when it is listed
+// again (its box left L_f by the margin the caller gave it, or the face
+// changed).
 //
 // Partner lists are symmetric and hold no repeats. Deterministic: a fixed
 // history of calls gives fixed lists (their order does not matter to the
