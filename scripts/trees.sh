@@ -21,6 +21,15 @@ out=${OUT:-out/trees}
 threads=${THREADS:-1}
 mkdir -p "$out"
 
+# The map must show the same plants the GA runs grow and score.
+python3 - <<'PY'
+import json, sys
+tree, tree_map = json.load(open("configs/tree.json")), json.load(open("configs/tree_map.json"))
+for key in ("network", "growth", "fitness"):
+    if tree.get(key) != tree_map.get(key):
+        sys.exit(f"trees.sh: configs/tree.json and configs/tree_map.json differ in {key!r}")
+PY
+
 # Whether RUN's history.csv has its header and ROWS generations.
 complete() { [ -f "$1/history.csv" ] && [ "$(wc -l < "$1/history.csv")" -eq $(( $2 + 1 )) ]; }
 
