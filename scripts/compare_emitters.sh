@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# Every MAP-Elites emitter kind against the GA and random search on the canopy
+# problem, on three descriptor grids, at an equal budget of births
+# (docs/results.md "Every emitter on three grids").
+#
+# usage: scripts/compare_emitters.sh [GENERATIONS] [POPULATION] [SEEDS...]
+#   defaults: 200 100 1 2 3 -> B = POPULATION * (GENERATIONS + 1) = 20,100
+#   births per run; results in out/compare_emitters/ (OUT=... to change)
+#   GRIDS="shipped fine shape"   which grids (default all three)
+#   METHODS="ga random gaussian iso_line cma_me cma_mae"   which methods
+#   JOBS=2     runs side by side (default 1), THREADS=1 threads per run
+#
+# The grids:
+#   shipped  configs/map_elites.json's: height [10, 20] x footprint [0, 800], 20 x 20
+#   fine     the same ranges in 40 x 40 cells
+#   shape    spread [0, 4] x slenderness [0, 4], 20 x 20: two shape ratios the
+#            canopy fitness does not bound
+# The methods (all with configs/map_elites.json's network, growth, fitness and
+# evolution settings; only `emitters` differ between the MAP-Elites rows):
+#   ga        configs/canopy.json with the grid's `descriptors` (recorded in
+#             lineage.csv; the search does not use them)
+#   random    B random genomes: MAP-Elites with population B and 0 generations
+#   gaussian  [{"kind": "gaussian"}] (the default emitter)
+#   iso_line  [{"kind": "iso_line", "selection": "fitness_proportional"}]
+#   cma_me    4 x {"kind": "cma_me", "sigma0": 0.2}
+#   cma_mae   configs/map_elites.json's emitters (4 x cma_mae, sigma0 0.2, learning_rate 0.1)
+# A GA or random run records the grid's measures, so grids with the same
+# measures (shipped, fine) share one such run per seed.
+#
+# A run whose history.csv is complete is not run again, one that was stopped is
+# resumed (to the same bytes as an unbroken run), and one whose config changed
+# is started again, so the script can be stopped and re-run. Then
+# scripts/qd_bin.py bins every run's lineage.csv into each grid and prints one
+# table per grid (coverage, QD-score, best canopy, ratios to the GA), and draws
+# the methods' heatmaps for the first seed (GRID-heatmaps-seed-S.png).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+generations=${1:-200}
+population=${2:-100}
+shift $(( $# > 2 ? 2 : $# ))
+seeds=("$@")
+[ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3)
+exe=build/morphogen
+out=${OUT:-out/compare_emitters}
+threads=${THREADS:-1}
+jobs=${JOBS:-1}
+read -r -a grids <<< "${GRIDS:-shipped fine shape}"
+read -r -a methods <<< "${METHODS:-ga random gaussian iso_line cma_me cma_mae}"
+budget=$(( population * (generations + 1) ))
+mkdir -p "$out"
+
+# The configs, from the shipped ones: out/GRID.json (the grid), and for each
+# grid and method the config of its runs; prints "GRID METHOD RUN_NAME" lines,
+# RUN_NAME shared by the GA (random) runs of grids with the same measures.
+plan=$(python3 - "$out" "$population" "$budget" "${grids[*]}" "${methods[*]}" <<'PY'
+import json, sys
+out, population, budget = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+grids, methods = sys.argv[4].split(), sys.argv[5].split()
+ga_base = json.load(open("configs/canopy.json"))
+me_base = json.load(open("configs/map_elites.json"))
+for key in ("network", "growth", "fitness"):
+    if ga_base.get(key) != me_base.get(key):
+        sys.exit(f"compare_emitters: configs/canopy.json and configs/map_elites.json differ in {key!r}")
+for c in (ga_base, me_base):
+    c.pop("$schema", None)
+shipped = me_base["descriptors"]
+all_grids = {
+    "shipped": shipped,
+    "fine": [dict(d, bins=2 * d["bins"]) for d in shipped],
+    "shape": [{"measure": "spread", "min": 0, "max": 4, "bins": 20},
+              {"measure": "slenderness", "min": 0, "max": 4, "bins": 20}],
+}
+emitters = {
+    "gaussian": [{"kind": "gaussian"}],
+    "iso_line": [{"kind": "iso_line", "selection": "fitness_proportional"}],
+    "cma_me": [{"kind": "cma_me", "sigma0": 0.2}] * 4,
+    "cma_mae": me_base["emitters"],
+}
+for grid in grids:
+    if grid not in all_grids:
+        sys.exit(f"compare_emitters: unknown grid {grid!r} (one of {', '.join(all_grids)})")
+    descriptors = all_grids[grid]
+    json.dump({"descriptors": descriptors}, open(f"{out}/{grid}.json", "w"), indent=2)
+    measures = "-".join(d["measure"] for d in descriptors)
+    for method in methods:
+        if method == "ga":
+            c = json.loads(json.dumps(ga_base))
+            c["evolution"]["population"] = population
+            name = f"ga-{measures}"
+        else:
+            c = json.loads(json.dumps(me_base))
+            if method == "random":
+                c["evolution"]["population"] = budget
+                name = f"random-{measures}"
+            elif method in emitters:
+                c["evolution"]["population"] = population
+                c["emitters"] = emitters[method]
+                name = f"{grid}-{method}"
+            else:
+                sys.exit(f"compare_emitters: unknown method {method!r} (ga, random or one of {', '.join(emitters)})")
+        c["descriptors"] = descriptors
+        c["run"]["name"] = name
+        json.dump(c, open(f"{out}/{name}.json", "w"), indent=2)
+        print(grid, method, name)
+PY
+)
+
+# Whether RUN's history.csv has its header and ROWS generations.
+complete() { [ -f "$1/history.csv" ] && [ "$(wc -l < "$1/history.csv")" -eq $(( $2 + 1 )) ]; }
+
+# One run: NAME SEED (evolve, resume, or nothing when it is complete).
+run_one() {
+  local name=$1 s=$2 dir="$out/$1-$2" gens=$generations same=false
+  [[ $name == random-* ]] && gens=0
+  cmp -s "$out/$name.json" "$dir.json" 2>/dev/null && same=true
+  if $same && complete "$dir" $(( gens + 1 )); then return 0; fi
+  if $same && [ -f "$dir/checkpoint.json" ]; then
+    echo "$(date -u +%H:%M:%S) $name seed $s: resume" >&2
+    "$exe" resume "$dir" --generations "$gens" --threads "$threads" >> "$dir.log" 2>&1
+  else
+    echo "$(date -u +%H:%M:%S) $name seed $s: evolve" >&2
+    cp "$out/$name.json" "$dir.json"  # what this run was started from
+    "$exe" evolve "$out/$name.json" --seed "$s" --generations "$gens" --threads "$threads" \
+      --out "$dir" --force --no-report > "$dir.log" 2>&1
+  fi
+}
+export -f run_one complete
+export out exe generations threads
+
+for s in "${seeds[@]}"; do
+  awk '{print $3}' <<< "$plan" | sort -u | sed "s/\$/ $s/"
+done | xargs -P "$jobs" -L 1 bash -c 'run_one "$0" "$1"'
+
+for grid in "${grids[@]}"; do
+  runs=() first=()
+  while read -r g method name; do
+    [ "$g" = "$grid" ] || continue
+    for s in "${seeds[@]}"; do runs+=("$method/$s=$out/$name-$s"); done
+    first+=("$method=$out/$name-${seeds[0]}")
+  done <<< "$plan"
+  echo "## grid $grid"
+  python3 scripts/qd_bin.py table --grid-from "$out/$grid.json" --budget "$budget" --reference ga "${runs[@]}"
+  python3 scripts/qd_bin.py heatmap --grid-from "$out/$grid.json" --png "$out/$grid-heatmaps-seed-${seeds[0]}.png" "${first[@]}"
+done
