@@ -39,11 +39,12 @@ struct BenchQdOptions {
     std::uint64_t seed = 1;
     bool json = false;
     std::size_t covariance_cost = 0;  // > 0: time the covariance models at this n instead
+    std::string covariance = "diagonal";  // the CMA emitters' model
 };
 
 constexpr int kPerIteration = 540, kCmaEmitters = 15;
 
-MapElitesParams params_for(const std::string& algorithm) {
+MapElitesParams params_for(const std::string& algorithm, CmaCovariance covariance) {
     MapElitesParams p;
     p.population = kPerIteration;
     p.batch = kPerIteration;
@@ -68,6 +69,7 @@ MapElitesParams params_for(const std::string& algorithm) {
         e.restart = original ? CmaRestart::no_improvement : CmaRestart::basic;
         e.learning_rate = 0.01;
         e.threshold_min = 0.0;
+        e.covariance = covariance;
         p.emitters.assign(kCmaEmitters, e);
     } else {
         throw std::invalid_argument("unknown algorithm " + algorithm);
@@ -84,7 +86,8 @@ QdRun run_one(const std::string& algorithm, const BenchQdOptions& o, std::uint64
     SphereProjection problem(o.dimension);
     Archive archive = Archive::grid(problem.archive_ranges());
     const double cells = static_cast<double>(archive.cells());
-    MapElites me(params_for(algorithm), seed, problem, MapElitesState{0, std::move(archive), {}, 0, 0});
+    const CmaCovariance covariance = o.covariance == "full" ? CmaCovariance::full : CmaCovariance::diagonal;
+    MapElites me(params_for(algorithm, covariance), seed, problem, MapElitesState{0, std::move(archive), {}, 0, 0});
     const auto start = std::chrono::steady_clock::now();
     const std::uint64_t target = o.iterations * kPerIteration;
     while (me.state().births < target) me.step(1);
@@ -167,9 +170,12 @@ int run_bench_qd(const BenchQdOptions& o) {
     report["iterations"] = o.iterations;
     report["births_per_iteration"] = kPerIteration;
     report["dimension"] = o.dimension;
+    report["covariance"] = o.covariance;
     if (!o.json)
-        std::printf("sphere linear projection, n = %zu, %llu iterations x %d births, 100 x 100 cells, %d seed(s)\n",
-                    o.dimension, static_cast<unsigned long long>(o.iterations), kPerIteration, o.seeds);
+        std::printf("sphere linear projection, n = %zu, %llu iterations x %d births, 100 x 100 cells, %d seed(s), "
+                    "%s covariance\n",
+                    o.dimension, static_cast<unsigned long long>(o.iterations), kPerIteration, o.seeds,
+                    o.covariance.c_str());
     for (const std::string& algorithm : o.algorithms) {
         std::vector<QdRun> runs;
         nlohmann::json rows = nlohmann::json::array();
@@ -213,6 +219,9 @@ void add_bench_qd_command(CLI::App& root, CommandRunner& selected) {
         ->check(CLI::Range(1, 1000));
     cmd->add_option("--seed", options->seed, "First seed (default 1)");
     cmd->add_flag("--json", options->json, "Print one JSON object");
+    cmd->add_option("--covariance", options->covariance,
+                    "The CMA emitters' covariance model: diagonal (sep-CMA-ES, default) or full (CMA-ES)")
+        ->check(CLI::IsMember({"diagonal", "full"}));
     cmd->add_option("--covariance-cost", options->covariance_cost,
                     "Instead: time sampling and updating a diagonal and a full covariance at N parameters")
         ->check(CLI::Range(2, 20000));

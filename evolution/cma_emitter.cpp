@@ -10,17 +10,22 @@ namespace morphogen {
 void start_cma_emitter(const EmitterSpec& spec, CmaEmitterState& state, const Individual& elite) {
     if (state.started) ++state.restarts;
     state.started = true;
-    state.cma = sep_cma_start(elite.params, spec.sigma0);
+    if (spec.covariance == CmaCovariance::full)
+        state.full = full_cma_start(elite.params, spec.sigma0);
+    else
+        state.cma = sep_cma_start(elite.params, spec.sigma0);
     state.origin = elite.id;
     state.children.clear();
 }
 
-Individual sample_cma_child(const CmaEmitterState& state, std::uint64_t seed, std::uint64_t birth) {
+Individual sample_cma_child(const EmitterSpec& spec, const CmaEmitterState& state, std::uint64_t seed,
+                            std::uint64_t birth) {
     RandomStream stream(seed, birth);
     Individual child;
     child.id = birth;
     child.parent1 = state.origin;
-    child.params = sep_cma_sample(state.cma, stream);
+    child.params = spec.covariance == CmaCovariance::full ? full_cma_sample(state.full, stream)
+                                                          : sep_cma_sample(state.cma, stream);
     return child;
 }
 
@@ -49,10 +54,14 @@ bool finish_cma_iteration(const EmitterSpec& spec, CmaEmitterState& state) {
     std::vector<const std::vector<double>*> parents;
     parents.reserve(mu);
     for (std::size_t k = 0; k < mu; ++k) parents.push_back(&children[order[k]].params);
-    sep_cma_update(state.cma, parents);
+    const bool full = spec.covariance == CmaCovariance::full;
+    if (full)
+        full_cma_update(state.full, parents);
+    else
+        sep_cma_update(state.cma, parents);
     const bool flat = valid > 1 && high - low < 1e-12;
     const bool stalled = spec.restart == CmaRestart::no_improvement && improving == 0;
-    return stalled || flat || sep_cma_converged(state.cma);
+    return stalled || flat || (full ? full_cma_converged(state.full) : sep_cma_converged(state.cma));
 }
 
 }  // namespace morphogen

@@ -2,7 +2,8 @@
 // The CMA emitters of MAP-Elites (docs/algorithm.md §9.9): each runs its own
 // separable CMA-ES (sep_cma.hpp) whose iterations are the emitter's births in
 // one generation (lambda = its births_per_generation), ranked by what they did
-// to the archive.
+// to the archive. With `covariance: "full"` the distribution is full CMA-ES
+// (full_cma.hpp) instead.
 //
 // - cma_me (Fontaine et al. 2020, the improvement emitter): a child that
 //   filled a cell ranks before one that improved an elite, each group by
@@ -18,6 +19,7 @@
 // takes an elite (the emitter's parent selection, from its own stream) as the
 // mean, sigma0 as the step size and C = I.
 #include "evolution/emitters.hpp"
+#include "evolution/full_cma.hpp"
 #include "evolution/individual.hpp"
 #include "evolution/sep_cma.hpp"
 
@@ -36,7 +38,8 @@ struct CmaChild {
 
 struct CmaEmitterState {
     bool started = false;                 // false until an elite exists to start from
-    SepCmaState cma;                      // meaningful only when started
+    SepCmaState cma;                      // meaningful only when started, for the diagonal model
+    FullCmaState full;                    // meaningful only when started, for the full model
     std::optional<std::uint64_t> origin;  // the elite the current run started from (its children's parent1)
     std::uint64_t restarts = 0;           // starts after the first
     std::vector<CmaChild> children;       // this iteration's children so far, in birth order
@@ -48,8 +51,10 @@ inline bool is_cma(EmitterKind kind) { return kind == EmitterKind::cma_me || kin
 // spec.sigma0, C = I, paths zero, origin = its id, no children.
 void start_cma_emitter(const EmitterSpec& spec, CmaEmitterState& state, const Individual& elite);
 
-// Birth `birth` of a started emitter: sep_cma_sample from RandomStream(seed, birth).
-Individual sample_cma_child(const CmaEmitterState& state, std::uint64_t seed, std::uint64_t birth);
+// Birth `birth` of a started emitter: sep_cma_sample (or full_cma_sample)
+// from RandomStream(seed, birth).
+Individual sample_cma_child(const EmitterSpec& spec, const CmaEmitterState& state, std::uint64_t seed,
+                            std::uint64_t birth);
 
 // Ends an iteration: ranks the children (status, then value, both
 // descending; ties in birth order), updates the distribution from the

@@ -16,6 +16,19 @@ using state_json::read_u64;
 namespace {
 constexpr const char* kVectors[] = {"mean", "variances", "path_c", "path_sigma"};
 
+// A full covariance matrix as its rows, each stored as a genome is.
+json matrix_json(const std::vector<double>& matrix, std::size_t n, GenomeBlobWriter* genomes) {
+    json rows = json::array();
+    for (std::size_t r = 0; r < n; ++r) {
+        const std::vector<double> row(matrix.begin() + static_cast<std::ptrdiff_t>(r * n),
+                                      matrix.begin() + static_cast<std::ptrdiff_t>((r + 1) * n));
+        json holder = json::object();
+        genome_to_json(holder, row, genomes);
+        rows.push_back(std::move(holder));
+    }
+    return rows;
+}
+
 json vector_json(const std::vector<double>& v, GenomeBlobWriter* genomes) {
     json out = json::object();
     genome_to_json(out, v, genomes);
@@ -45,12 +58,16 @@ json emitter_states_to_json(std::span<const CmaEmitterState> states, GenomeBlobW
         json e = json::object();
         e["restarts"] = s.restarts;
         e["origin"] = s.origin ? json(*s.origin) : json(nullptr);
-        e["sigma"] = s.cma.sigma;
-        e["updates"] = s.cma.updates;
-        e["mean"] = vector_json(s.cma.mean, genomes);
-        e["variances"] = vector_json(s.cma.variances, genomes);
-        e["path_c"] = vector_json(s.cma.path_c, genomes);
-        e["path_sigma"] = vector_json(s.cma.path_sigma, genomes);
+        const bool full = !s.full.covariance.empty();  // the model start_cma_emitter chose
+        e["sigma"] = full ? s.full.sigma : s.cma.sigma;
+        e["updates"] = full ? s.full.updates : s.cma.updates;
+        e["mean"] = vector_json(full ? s.full.mean : s.cma.mean, genomes);
+        if (full)
+            e["covariance"] = matrix_json(s.full.covariance, s.full.mean.size(), genomes);
+        else
+            e["variances"] = vector_json(s.cma.variances, genomes);
+        e["path_c"] = vector_json(full ? s.full.path_c : s.cma.path_c, genomes);
+        e["path_sigma"] = vector_json(full ? s.full.path_sigma : s.cma.path_sigma, genomes);
         json children = json::array();
         for (const CmaChild& c : s.children) {
             json row = vector_json(c.params, genomes);
@@ -85,15 +102,39 @@ std::vector<CmaEmitterState> emitter_states_from_json(const json& list, const Em
             s.origin = read_u64(origin, at + ".origin");
             if (*s.origin >= shape.births) fail(at + ".origin", "not below the birth counter");
         }
-        s.cma.sigma = read_finite(member(e, "sigma", at), at + ".sigma");
-        if (!(s.cma.sigma > 0.0)) fail(at + ".sigma", "must be > 0");
-        s.cma.updates = read_u64(member(e, "updates", at), at + ".updates");
-        std::vector<double>* targets[] = {&s.cma.mean, &s.cma.variances, &s.cma.path_c, &s.cma.path_sigma};
-        for (std::size_t v = 0; v < 4; ++v)
-            *targets[v] = genome_from_json(member(e, kVectors[v], at), shape.dimension, at + "." + kVectors[v], genomes);
-        for (std::size_t i = 0; i < s.cma.variances.size(); ++i)
-            if (!(s.cma.variances[i] > 0.0))
-                fail(at + ".variances", "value " + std::to_string(i) + " is not > 0");
+        const bool full = shape.specs[k].covariance == CmaCovariance::full;
+        const double sigma = read_finite(member(e, "sigma", at), at + ".sigma");
+        if (!(sigma > 0.0)) fail(at + ".sigma", "must be > 0");
+        const std::uint64_t updates = read_u64(member(e, "updates", at), at + ".updates");
+        auto vector_at = [&](const char* key) {
+            return genome_from_json(member(e, key, at), shape.dimension, at + "." + key, genomes);
+        };
+        if (full) {
+            FullCmaState& f = s.full;
+            f.sigma = sigma;
+            f.updates = updates;
+            f.mean = vector_at("mean");
+            const json& rows = member(e, "covariance", at);
+            if (!rows.is_array() || rows.size() != shape.dimension)
+                fail(at + ".covariance", "expected " + std::to_string(shape.dimension) + " rows");
+            f.covariance.reserve(shape.dimension * shape.dimension);
+            for (std::size_t r = 0; r < rows.size(); ++r) {
+                const std::vector<double> row =
+                    genome_from_json(rows[r], shape.dimension, at + ".covariance[" + std::to_string(r) + "]", genomes);
+                f.covariance.insert(f.covariance.end(), row.begin(), row.end());
+            }
+            f.path_c = vector_at("path_c");
+            f.path_sigma = vector_at("path_sigma");
+            if (!full_cma_decompose(f)) fail(at + ".covariance", "not a symmetric positive definite matrix");
+        } else {
+            s.cma.sigma = sigma;
+            s.cma.updates = updates;
+            std::vector<double>* targets[] = {&s.cma.mean, &s.cma.variances, &s.cma.path_c, &s.cma.path_sigma};
+            for (std::size_t v = 0; v < 4; ++v) *targets[v] = vector_at(kVectors[v]);
+            for (std::size_t i = 0; i < s.cma.variances.size(); ++i)
+                if (!(s.cma.variances[i] > 0.0))
+                    fail(at + ".variances", "value " + std::to_string(i) + " is not > 0");
+        }
         const json& children = member(e, "children", at);
         if (!children.is_array()) fail(at + ".children", "expected an array");
         const std::uint64_t expected = expected_children(shape, k);
@@ -127,6 +168,9 @@ void for_each_emitter_vector(json& list, const std::string& path,
         const std::string at = path + "[" + std::to_string(k) + "]";
         for (const char* key : kVectors)
             if (e.contains(key)) each(e[key], at + "." + key);
+        if (e.contains("covariance") && e["covariance"].is_array())
+            for (std::size_t r = 0; r < e["covariance"].size(); ++r)
+                each(e["covariance"][r], at + ".covariance[" + std::to_string(r) + "]");
         if (e.contains("children") && e["children"].is_array())
             for (std::size_t c = 0; c < e["children"].size(); ++c)
                 each(e["children"][c], at + ".children[" + std::to_string(c) + "]");

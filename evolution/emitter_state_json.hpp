@@ -8,7 +8,8 @@
 //   {"restarts": n, "origin": id | null, "sigma": s, "updates": n,
 //    "mean": v, "variances": v, "path_c": v, "path_sigma": v,
 //    "children": [{"status": 0|1|2, "value": x | null, <vector>}, ...]}
-// otherwise.
+// otherwise; an emitter with the full covariance model has, instead of
+// "variances", "covariance": [<vector>, ...], C's n rows.
 #include "evolution/cma_emitter.hpp"
 #include "evolution/emitters.hpp"
 #include "evolution/genome_blob.hpp"
@@ -35,7 +36,8 @@ struct EmitterStateShape {
 };
 
 // Reads and checks the list at `path`: one entry per spec, null for the
-// stateless ones; numbers finite, sigma and variances > 0, origin below the
+// stateless ones; numbers finite, sigma and variances > 0, a full C
+// symmetric positive definite, origin below the
 // birth counter, exactly as many children as the emitter's births so far in
 // the current iteration, an invalid child (value null) with status 0.
 // Throws std::invalid_argument naming the first defect.

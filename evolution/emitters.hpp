@@ -33,6 +33,10 @@ enum class CmaParents { filter, mu };
 // When a CMA emitter restarts besides CMA-ES's own stop tests ("basic"):
 // also after an iteration in which no child filled or improved a cell.
 enum class CmaRestart { no_improvement, basic };
+// A CMA emitter's covariance model (algorithm.md §9.9): separable (a
+// diagonal C, sep_cma.hpp; O(n) a child) or full (full_cma.hpp; O(n^2) a
+// child and an O(n^3) eigendecomposition an iteration).
+enum class CmaCovariance { diagonal, full };
 
 struct EmitterSpec {
     EmitterKind kind = EmitterKind::gaussian;
@@ -46,6 +50,7 @@ struct EmitterSpec {
     // cma_me's defaults (Fontaine et al. 2020); cma_mae's are mu and basic.
     CmaParents parents = CmaParents::filter;
     CmaRestart restart = CmaRestart::no_improvement;
+    CmaCovariance covariance = CmaCovariance::diagonal;  // cma_me, cma_mae
 };
 
 // Births of one generation for each emitter: P x share / (sum of shares),

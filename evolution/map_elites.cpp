@@ -51,7 +51,7 @@ Individual MapElites::conceive_from(const ParentPool& pool, std::uint64_t birth)
     const std::size_t k = emitter_index(birth);
     if (is_cma(emitters_[k].kind)) {
         // An emitter not yet started (no elite so far) makes random genomes.
-        if (state_.emitters[k].started) return sample_cma_child(state_.emitters[k], seed_, birth);
+        if (state_.emitters[k].started) return sample_cma_child(emitters_[k], state_.emitters[k], seed_, birth);
         return conceive_birth(rules(), blocks_, problem_.dimension(), seed_, birth, ParentPicker{});
     }
     return emit(emitters_[k], rules(), blocks_, problem_.dimension(), seed_, birth, pool);

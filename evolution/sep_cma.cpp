@@ -1,15 +1,11 @@
 #include "evolution/sep_cma.hpp"
 
+#include "evolution/cma_rates.hpp"
+
 #include <algorithm>
 #include <cmath>
-#include <stdexcept>
 
 namespace morphogen {
-
-namespace {
-// E||N(0, I_n)||, the usual approximation.
-double expected_norm(double n) { return std::sqrt(n) * (1.0 - 1.0 / (4.0 * n) + 1.0 / (21.0 * n * n)); }
-}  // namespace
 
 SepCmaState sep_cma_start(std::vector<double> mean, double sigma) {
     SepCmaState s;
@@ -31,35 +27,13 @@ std::vector<double> sep_cma_sample(const SepCmaState& state, RandomStream& strea
 
 void sep_cma_update(SepCmaState& s, std::span<const std::vector<double>* const> parents) {
     const std::size_t n = s.mean.size(), mu = parents.size();
-    if (mu == 0) throw std::invalid_argument("a CMA update needs at least one parent");
-    for (const std::vector<double>* p : parents)
-        if (p->size() != n) throw std::invalid_argument("a CMA parent has the wrong number of parameters");
-    const double N = static_cast<double>(n);
-
-    // Recombination weights and the strategy's rates (Hansen 2016, Table 1).
-    std::vector<double> w(mu);
-    double wsum = 0.0;
-    for (std::size_t k = 0; k < mu; ++k) {
-        w[k] = std::log(static_cast<double>(mu) + 0.5) - std::log(static_cast<double>(k + 1));
-        wsum += w[k];
-    }
-    double w2 = 0.0;
-    for (double& v : w) {
-        v /= wsum;
-        w2 += v * v;
-    }
-    const double mueff = 1.0 / w2;
-    const double cs = (mueff + 2.0) / (N + mueff + 5.0);
-    const double ds = 1.0 + 2.0 * std::max(0.0, std::sqrt((mueff - 1.0) / (N + 1.0)) - 1.0) + cs;
-    const double cc = (4.0 + mueff / N) / (N + 4.0 + 2.0 * mueff / N);
-    const double c1_full = 2.0 / ((N + 1.3) * (N + 1.3) + mueff);
-    const double cmu_full = std::min(1.0 - c1_full, 2.0 * (mueff - 2.0 + 1.0 / mueff) / ((N + 2.0) * (N + 2.0) + mueff));
-    const double c1 = std::min(1.0, c1_full * (N + 2.0) / 3.0);
-    const double cmu = std::min(1.0 - c1, cmu_full * (N + 2.0) / 3.0);
-    const double chi = expected_norm(N);
+    const CmaRates rates = cma_rates(parents, n, /*separable=*/true);
+    const std::vector<double>& w = rates.weights;
+    const double N = static_cast<double>(n), mueff = rates.mueff, cs = rates.cs, ds = rates.ds, cc = rates.cc;
+    const double c1 = rates.c1, cmu = rates.cmu, chi = rates.chi;
 
     // Steps y_k = (x_k - m) / sigma, clipped in Mahalanobis length.
-    const double max_length = std::sqrt(N) + 2.0 * N / (N + 2.0);
+    const double max_length = rates.max_length;
     std::vector<std::vector<double>> y(mu, std::vector<double>(n));
     std::vector<double> yw(n, 0.0);
     for (std::size_t k = 0; k < mu; ++k) {

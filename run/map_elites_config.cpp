@@ -106,8 +106,10 @@ std::vector<EmitterSpec> read_emitters(const json& list, ObjectReader& top, Conf
             e.restart = r.choice("restart", annealing ? "basic" : "no_improvement", {"no_improvement", "basic"}) == "basic"
                             ? CmaRestart::basic
                             : CmaRestart::no_improvement;
+            e.covariance = r.choice("covariance", "diagonal", {"diagonal", "full"}) == "full" ? CmaCovariance::full
+                                                                                              : CmaCovariance::diagonal;
         } else {
-            for (const char* key : {"sigma0", "parents", "restart"})
+            for (const char* key : {"sigma0", "parents", "restart", "covariance"})
                 if (r.raw(key) != nullptr) issues.add(r.path_of(key), "only for kinds \"cma_me\" and \"cma_mae\"");
         }
         if (annealing) {
@@ -130,6 +132,8 @@ std::vector<EmitterSpec> read_emitters(const json& list, ObjectReader& top, Conf
         }
         if (!cma)
             for (const char* key : {"sigma0", "parents", "restart"}) item.erase(key);
+        // The default model is left out, so runs begun before the key resume.
+        if (e.covariance == CmaCovariance::diagonal) item.erase("covariance");
         if (!annealing)
             for (const char* key : {"learning_rate", "threshold_min"}) item.erase(key);
         resolved.push_back(std::move(item));

@@ -2,6 +2,7 @@
 
 #include "core/errors.hpp"
 #include "core/network.hpp"
+#include "evolution/cma_emitter.hpp"
 #include "fitness/canopy.hpp"
 #include "fitness/light.hpp"
 #include "fitness/tree_fitness.hpp"
@@ -391,10 +392,21 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
                                                : std::vector<std::string>{"evolution.population",
                                                                           in_flight_key(config.evolution)}),
                             e.genomes.held * (8 * D + genome_overhead)});
+        // CMA emitters with a full covariance: C, its eigenvectors, the
+        // eigensolver's copy and the update's new C, n x n doubles each; C goes
+        // into every checkpoint too.
+        double full_matrices = 0;
+        if (elites)
+            for (const EmitterSpec& emitter : config.qd.emitters)
+                full_matrices += is_cma(emitter.kind) && emitter.covariance == CmaCovariance::full ? 1 : 0;
+        if (full_matrices > 0)
+            e.memory.push_back({group(full_matrices) + " full covariance matrices of " + group(D) + " x " + group(D) +
+                                    " (C, its eigenvectors, the solver's and the update's copies)",
+                                with({"emitters"}, network_keys), full_matrices * 4 * 8 * D * D});
         const double kept = e.genomes.checkpointed;
         const double rows = static_cast<double>(config.run.generations) + 1;
         const double header = kept * checkpoint_text_per_genome + rows * checkpoint_text_per_row + checkpoint_fixed;
-        e.checkpoint_bytes = kept * D * checkpoint_bytes_per_param + header;
+        e.checkpoint_bytes = (kept + full_matrices * D) * D * checkpoint_bytes_per_param + header;
         const double tree = kept * checkpoint_tree_per_genome + rows * checkpoint_tree_per_row + checkpoint_fixed;
         e.memory.push_back({"writing or reading a checkpoint of up to " + format_bytes(e.checkpoint_bytes) + " (" +
                                 group(kept) + " genomes, " + group(rows) + " history rows)",

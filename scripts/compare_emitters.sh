@@ -6,26 +6,32 @@
 # usage: scripts/compare_emitters.sh [GENERATIONS] [POPULATION] [SEEDS...]
 #   defaults: 200 100 1 2 3 -> B = POPULATION * (GENERATIONS + 1) = 20,100
 #   births per run; results in out/compare_emitters/ (OUT=... to change)
-#   GRIDS="shipped fine shape"   which grids (default all three)
+#   GRIDS="shipped fine shape"   which grids (default these three; also "old")
 #   METHODS="ga random gaussian iso_line cma_me cma_mae"   which methods
-#   JOBS=2     runs side by side (default 1), THREADS=1 threads per run
+#   (runs go in the order of METHODS, every seed of a method before the next)
+#   JOBS=2     runs side by side (default 1), THREADS=1 threads per run,
+#   EXE=PATH   the executable (default build/morphogen)
 #
 # The grids:
-#   shipped  configs/map_elites.json's: height [10, 20] x footprint [0, 800], 20 x 20
+#   shipped  configs/map_elites.json's: height [10, 20] x footprint [0, 1600], 20 x 20
 #   fine     the same ranges in 40 x 40 cells
 #   shape    spread [0, 4] x slenderness [0, 4], 20 x 20: two shape ratios the
 #            canopy fitness does not bound
+#   small    the shipped ranges in 10 x 10 cells (for a small budget:
+#            scripts/compare_emitters.sh 20 50 with GRIDS=small)
+#   old      the grid shipped before 2026-11-25: height [10, 20] x footprint
+#            [0, 800], 20 x 20 (it clips every plant whose canopy passes 800)
 # The methods (all with configs/map_elites.json's network, growth, fitness and
 # evolution settings; only `emitters` differ between the MAP-Elites rows):
-#   ga        configs/canopy.json with the grid's `descriptors` (recorded in
-#             lineage.csv; the search does not use them)
-#   random    B random genomes: MAP-Elites with population B and 0 generations
+#   ga        configs/canopy.json with the `descriptors` of every grid (recorded
+#             in lineage.csv; the search does not use them)
+#   random    B random genomes: the same GA with population B and 0 generations
 #   gaussian  [{"kind": "gaussian"}] (the default emitter)
 #   iso_line  [{"kind": "iso_line", "selection": "fitness_proportional"}]
 #   cma_me    4 x {"kind": "cma_me", "sigma0": 0.2}
 #   cma_mae   configs/map_elites.json's emitters (4 x cma_mae, sigma0 0.2, learning_rate 0.1)
-# A GA or random run records the grid's measures, so grids with the same
-# measures (shipped, fine) share one such run per seed.
+# A GA or random run records every grid's measures, so all grids share one
+# such run per seed.
 #
 # A run whose history.csv is complete is not run again, one that was stopped is
 # resumed (to the same bytes as an unbroken run), and one whose config changed
@@ -40,7 +46,7 @@ population=${2:-100}
 shift $(( $# > 2 ? 2 : $# ))
 seeds=("$@")
 [ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3)
-exe=build/morphogen
+exe=${EXE:-build/morphogen}
 out=${OUT:-out/compare_emitters}
 threads=${THREADS:-1}
 jobs=${JOBS:-1}
@@ -69,6 +75,9 @@ all_grids = {
     "fine": [dict(d, bins=2 * d["bins"]) for d in shipped],
     "shape": [{"measure": "spread", "min": 0, "max": 4, "bins": 20},
               {"measure": "slenderness", "min": 0, "max": 4, "bins": 20}],
+    "small": [dict(d, bins=d["bins"] // 2) for d in shipped],
+    "old": [{"measure": "height", "min": 10, "max": 20, "bins": 20},
+            {"measure": "footprint", "min": 0, "max": 800, "bins": 20}],
 }
 emitters = {
     "gaussian": [{"kind": "gaussian"}],
@@ -79,26 +88,29 @@ emitters = {
 for grid in grids:
     if grid not in all_grids:
         sys.exit(f"compare_emitters: unknown grid {grid!r} (one of {', '.join(all_grids)})")
-    descriptors = all_grids[grid]
-    json.dump({"descriptors": descriptors}, open(f"{out}/{grid}.json", "w"), indent=2)
-    measures = "-".join(d["measure"] for d in descriptors)
-    for method in methods:
-        if method == "ga":
+# Every grid's measures, each once, for the GA and random runs to record.
+recorded = {}
+for g in all_grids.values():
+    for d in g:
+        recorded.setdefault(d["measure"], d)
+recorded = list(recorded.values())
+for grid in grids:
+    json.dump({"descriptors": all_grids[grid]}, open(f"{out}/{grid}.json", "w"), indent=2)
+for method in methods:
+    for grid in grids:
+        if method in ("ga", "random"):
             c = json.loads(json.dumps(ga_base))
-            c["evolution"]["population"] = population
-            name = f"ga-{measures}"
-        else:
+            c["evolution"]["population"] = budget if method == "random" else population
+            c["descriptors"] = recorded
+            name = method
+        elif method in emitters:
             c = json.loads(json.dumps(me_base))
-            if method == "random":
-                c["evolution"]["population"] = budget
-                name = f"random-{measures}"
-            elif method in emitters:
-                c["evolution"]["population"] = population
-                c["emitters"] = emitters[method]
-                name = f"{grid}-{method}"
-            else:
-                sys.exit(f"compare_emitters: unknown method {method!r} (ga, random or one of {', '.join(emitters)})")
-        c["descriptors"] = descriptors
+            c["evolution"]["population"] = population
+            c["emitters"] = emitters[method]
+            c["descriptors"] = all_grids[grid]
+            name = f"{grid}-{method}"
+        else:
+            sys.exit(f"compare_emitters: unknown method {method!r} (ga, random or one of {', '.join(emitters)})")
         c["run"]["name"] = name
         json.dump(c, open(f"{out}/{name}.json", "w"), indent=2)
         print(grid, method, name)
@@ -111,7 +123,7 @@ complete() { [ -f "$1/history.csv" ] && [ "$(wc -l < "$1/history.csv")" -eq $(( 
 # One run: NAME SEED (evolve, resume, or nothing when it is complete).
 run_one() {
   local name=$1 s=$2 dir="$out/$1-$2" gens=$generations same=false
-  [[ $name == random-* ]] && gens=0
+  [[ $name == random ]] && gens=0
   cmp -s "$out/$name.json" "$dir.json" 2>/dev/null && same=true
   if $same && complete "$dir" $(( gens + 1 )); then return 0; fi
   if $same && [ -f "$dir/checkpoint.json" ]; then
@@ -127,8 +139,9 @@ run_one() {
 export -f run_one complete
 export out exe generations threads
 
-for s in "${seeds[@]}"; do
-  awk '{print $3}' <<< "$plan" | sort -u | sed "s/\$/ $s/"
+# Run names in plan order (a method's grids together), each once, then seeds.
+awk '!seen[$3]++ {print $3}' <<< "$plan" | while read -r name; do
+  for s in "${seeds[@]}"; do echo "$name $s"; done
 done | xargs -P "$jobs" -L 1 bash -c 'run_one "$0" "$1"'
 
 for grid in "${grids[@]}"; do

@@ -590,4 +590,18 @@ TEST_CASE("CMA emitters: defaults per kind resolved, keys of other kinds and dis
     refused(R"([{"kind": "cma_mae", "restart": "never"}])", "emitters[0].restart");
     refused(R"([{"kind": "cma_mae", "learning_rate": 1.5}])", "emitters[0].learning_rate");
     refused(R"([{"kind": "cma_mae"}, {"kind": "cma_mae", "threshold_min": -5}])", "same learning_rate and threshold_min");
+    refused(R"([{"kind": "iso_line", "covariance": "full"}])", "emitters[0].covariance");
+    refused(R"([{"kind": "cma_me", "covariance": "dense"}])", "emitters[0].covariance");
+
+    // The covariance model: the default diagonal one stays out of the resolved
+    // config (runs begun before the key resume), "full" is kept.
+    CHECK(read.qd.emitters[0].covariance == CmaCovariance::diagonal);
+    CHECK_FALSE(read.resolved["emitters"][0].contains("covariance"));
+    json full = config;
+    full["emitters"][1]["covariance"] = "full";
+    const ExperimentConfig read_full = read_experiment_config(full, "x");
+    CHECK(read_full.qd.emitters[1].covariance == CmaCovariance::full);
+    CHECK(read_full.resolved["emitters"][1]["covariance"] == "full");
+    CHECK(read_experiment_config(read_full.resolved, "again").resolved == read_full.resolved);
+    CHECK(schema_errors(read_full.resolved) == "");
 }

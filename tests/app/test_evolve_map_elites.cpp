@@ -385,6 +385,19 @@ TEST_CASE("a MAP-Elites run begun before lineage.csv had descriptor columns resu
     CHECK(cells_of(lines_of(read_text(old / "lineage.csv")).back()).size() == 5);
 }
 
+namespace {
+// Writes `config` to me.json in `tmp`, evolves it on 1 and on 2 threads (into
+// one/ and two/) and checks the runs are the same; returns the config's path.
+std::string evolve_on_1_and_2_threads(const TempDir& tmp, const nlohmann::json& config) {
+    write_text(tmp.path / "me.json", config.dump());
+    const std::string path = (tmp.path / "me.json").string();
+    REQUIRE(run_morphogen("evolve " + path + " --out " + (tmp.path / "one").string() + " --threads 1").code == 0);
+    REQUIRE(run_morphogen("evolve " + path + " --out " + (tmp.path / "two").string() + " --threads 2").code == 0);
+    check_same_elite_runs(tmp.path / "one", tmp.path / "two");
+    return path;
+}
+}  // namespace
+
 TEST_CASE("MAP-Elites with CMA-ME and CMA-MAE emitters: the same files for any threads and after a resume; "
           "a damaged emitter state is refused",
           "[app][map_elites][emitters][checkpoint]") {
@@ -394,11 +407,7 @@ TEST_CASE("MAP-Elites with CMA-ME and CMA-MAE emitters: the same files for any t
     config["emitters"] = nlohmann::json::parse(R"([{"kind": "cma_me", "share": 1, "sigma0": 0.2},
         {"kind": "cma_mae", "share": 2, "sigma0": 0.3, "learning_rate": 0.2, "threshold_min": -1},
         {"kind": "iso_line", "share": 1}])");
-    write_text(tmp.path / "me.json", config.dump());
-    const std::string path = (tmp.path / "me.json").string();
-    REQUIRE(run_morphogen("evolve " + path + " --out " + (tmp.path / "one").string() + " --threads 1").code == 0);
-    REQUIRE(run_morphogen("evolve " + path + " --out " + (tmp.path / "two").string() + " --threads 2").code == 0);
-    check_same_elite_runs(tmp.path / "one", tmp.path / "two");
+    const std::string path = evolve_on_1_and_2_threads(tmp, config);
     const fs::path split = tmp.path / "split";
     REQUIRE(run_morphogen("evolve " + path + " --out " + split.string() + " --threads 2 --generations 2").code == 0);
     const fs::path damaged = tmp.path / "damaged";
@@ -449,4 +458,40 @@ TEST_CASE("MAP-Elites with CMA-ME and CMA-MAE emitters: the same files for any t
     CHECK_THAT(changed.output, Catch::Contains("emitters.0.sigma0 differs"));
     write_text(damaged / "config.json", config_text);
     CHECK(run_morphogen("resume " + damaged.string() + " --generations 3").code == 0);
+}
+
+TEST_CASE("MAP-Elites with full-covariance CMA emitters: the same files for any threads and after a resume; "
+          "a damaged covariance is refused and left as it was",
+          "[app][map_elites][emitters][checkpoint]") {
+    TempDir tmp("me-cma-full");
+    nlohmann::json config = nlohmann::json::parse(me_config(5));
+    config["evolution"].erase("batch");
+    config["emitters"] = nlohmann::json::parse(R"([{"kind": "cma_me", "sigma0": 0.2, "covariance": "full"},
+        {"kind": "cma_mae", "share": 2, "sigma0": 0.3, "learning_rate": 0.2, "covariance": "full"}])");
+    const std::string path = evolve_on_1_and_2_threads(tmp, config);
+    const fs::path split = tmp.path / "split";
+    REQUIRE(run_morphogen("evolve " + path + " --out " + split.string() + " --threads 2 --generations 2").code == 0);
+    const std::string original = read_text(split / "checkpoint.json");
+    const nlohmann::json content = checkpoint_content(original, "test");
+    const nlohmann::json& emitter = content["map_elites"]["emitters"][0];
+    const std::size_t n = content["map_elites"]["best"]["params"].size();
+    REQUIRE(emitter.contains("covariance"));
+    CHECK_FALSE(emitter.contains("variances"));
+    CHECK(emitter["covariance"].size() == n);
+
+    // C made asymmetric in one entry: refused, exit 5, the file untouched.
+    const fs::path damaged = tmp.path / "damaged";
+    fs::copy(split, damaged, fs::copy_options::recursive);
+    nlohmann::json changed = content;
+    changed["map_elites"]["emitters"][0]["covariance"][0]["params"][1] = 0.125;
+    changed["map_elites"]["emitters"][0]["covariance"][1]["params"][0] = 0.25;
+    const std::string text = checkpoint_text(changed);
+    write_text(damaged / "checkpoint.json", text);
+    const CliResult refused = run_morphogen("resume " + damaged.string() + " --generations 5");
+    CHECK(refused.code == 5);
+    CHECK_THAT(refused.output, Catch::Contains("map_elites.emitters[0].covariance"));
+    CHECK(read_text(damaged / "checkpoint.json") == text);
+
+    REQUIRE(run_morphogen("resume " + split.string() + " --generations 5 --threads 1").code == 0);
+    check_same_elite_runs(tmp.path / "one", split);
 }

@@ -197,6 +197,27 @@ TEST_CASE("memory grows with threads, population and network; time with steps an
     CHECK(grown.checkpoint_bytes == 0);
 }
 
+TEST_CASE("full-covariance CMA emitters count n x n doubles each, in memory and in the checkpoint", "[limits]") {
+    const std::string base = R"({"evolution": {"algorithm": "map_elites"},
+        "descriptors": [{"measure": "height", "min": 0, "max": 10, "bins": 4}], "emitters": )";
+    auto estimate = [&](const std::string& emitters, const std::string& network = "") {
+        const std::string text = base + emitters + (network.empty() ? "}" : ", \"network\": " + network + "}");
+        return estimate_of(config_of(text), evolution_on(1));
+    };
+    const ResourceEstimate diagonal = estimate(R"([{"kind": "cma_me"}, {"kind": "cma_me"}])");
+    const ResourceEstimate full = estimate(R"([{"kind": "cma_me", "covariance": "full"}, {"kind": "cma_me", "covariance": "full"}])");
+    const double n = static_cast<double>(full.parameters);
+    // Four matrices each, plus the checkpoint being written (C once more).
+    CHECK(full.memory_bytes() - diagonal.memory_bytes() >= 2 * 4 * 8 * n * n);
+    CHECK(full.memory_bytes() - diagonal.memory_bytes() <= 2 * 6 * 8 * n * n);
+    CHECK(full.checkpoint_bytes - diagonal.checkpoint_bytes >= 2 * 8 * n * n);
+    // A network wide enough that its matrices pass a modest machine's memory is refused, naming the emitters.
+    const ResourceEstimate wide = estimate(R"([{"kind": "cma_mae", "covariance": "full"}])", R"({"hidden": [1000]})");
+    const std::vector<ConfigIssue> issues = resource_issues(wide, modest_machine());
+    CHECK(blames(issues, "emitters"));
+    CHECK(resource_issues(estimate(R"([{"kind": "cma_mae"}])", R"({"hidden": [1000]})"), modest_machine()).empty());
+}
+
 TEST_CASE("fitness caps are checked with the numbers scoring enforces, at the term's key path", "[limits]") {
     const ExperimentConfig config = config_of(
         R"({"fitness": {"type": "sum", "terms": [{"type": "canopy", "weight": 1}, {"type": "light", "spacing": 0.005}]}})");
