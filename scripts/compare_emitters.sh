@@ -6,21 +6,22 @@
 # usage: scripts/compare_emitters.sh [GENERATIONS] [POPULATION] [SEEDS...]
 #   defaults: 200 100 1 2 3 -> B = POPULATION * (GENERATIONS + 1) = 20,100
 #   births per run; results in out/compare_emitters/ (OUT=... to change)
-#   GRIDS="shipped fine shape"   which grids (default these three; also "old")
-#   METHODS="ga random gaussian iso_line cma_me cma_mae"   which methods
+#   GRIDS="hf fine shape"   which grids (default these three; also shipped, small, wide)
+#   METHODS="ga random gaussian iso_line cma_me cma_mae mixed"   which methods
 #   (runs go in the order of METHODS, every seed of a method before the next)
 #   JOBS=2     runs side by side (default 1), THREADS=1 threads per run,
 #   EXE=PATH   the executable (default build/morphogen)
 #
 # The grids:
-#   shipped  configs/map_elites.json's: height [10, 20] x footprint [0, 1600], 20 x 20
+#   shipped  configs/map_elites.json's grid
+#   hf       height [10, 20] x footprint [0, 800], 20 x 20 (the grid shipped
+#            before 2026-11-25)
 #   fine     the same ranges in 40 x 40 cells
 #   shape    spread [0, 4] x slenderness [0, 4], 20 x 20: two shape ratios the
 #            canopy fitness does not bound
-#   small    the shipped ranges in 10 x 10 cells (for a small budget:
+#   small    hf's ranges in 10 x 10 cells (for a small budget:
 #            scripts/compare_emitters.sh 20 50 with GRIDS=small)
-#   old      the grid shipped before 2026-11-25: height [10, 20] x footprint
-#            [0, 800], 20 x 20 (it clips every plant whose canopy passes 800)
+#   wide     height [10, 20] x footprint [0, 1600], 20 x 20
 # The methods (all with configs/map_elites.json's network, growth, fitness and
 # evolution settings; only `emitters` differ between the MAP-Elites rows):
 #   ga        configs/canopy.json with the `descriptors` of every grid (recorded
@@ -29,7 +30,8 @@
 #   gaussian  [{"kind": "gaussian"}] (the default emitter)
 #   iso_line  [{"kind": "iso_line", "selection": "fitness_proportional"}]
 #   cma_me    4 x {"kind": "cma_me", "sigma0": 0.2}
-#   cma_mae   configs/map_elites.json's emitters (4 x cma_mae, sigma0 0.2, learning_rate 0.1)
+#   cma_mae   4 x {"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}
+#   mixed     2 x that cma_mae emitter and 2 x the iso_line one (fitness-proportional)
 # A GA or random run records every grid's measures, so all grids share one
 # such run per seed.
 #
@@ -50,8 +52,8 @@ exe=${EXE:-build/morphogen}
 out=${OUT:-out/compare_emitters}
 threads=${THREADS:-1}
 jobs=${JOBS:-1}
-read -r -a grids <<< "${GRIDS:-shipped fine shape}"
-read -r -a methods <<< "${METHODS:-ga random gaussian iso_line cma_me cma_mae}"
+read -r -a grids <<< "${GRIDS:-hf fine shape}"
+read -r -a methods <<< "${METHODS:-ga random gaussian iso_line cma_me cma_mae mixed}"
 budget=$(( population * (generations + 1) ))
 mkdir -p "$out"
 
@@ -69,21 +71,24 @@ for key in ("network", "growth", "fitness"):
         sys.exit(f"compare_emitters: configs/canopy.json and configs/map_elites.json differ in {key!r}")
 for c in (ga_base, me_base):
     c.pop("$schema", None)
-shipped = me_base["descriptors"]
+hf = [{"measure": "height", "min": 10, "max": 20, "bins": 20},
+      {"measure": "footprint", "min": 0, "max": 800, "bins": 20}]
 all_grids = {
-    "shipped": shipped,
-    "fine": [dict(d, bins=2 * d["bins"]) for d in shipped],
+    "shipped": me_base["descriptors"],
+    "hf": hf,
+    "fine": [dict(d, bins=2 * d["bins"]) for d in hf],
     "shape": [{"measure": "spread", "min": 0, "max": 4, "bins": 20},
               {"measure": "slenderness", "min": 0, "max": 4, "bins": 20}],
-    "small": [dict(d, bins=d["bins"] // 2) for d in shipped],
-    "old": [{"measure": "height", "min": 10, "max": 20, "bins": 20},
-            {"measure": "footprint", "min": 0, "max": 800, "bins": 20}],
+    "small": [dict(d, bins=d["bins"] // 2) for d in hf],
+    "wide": [hf[0], dict(hf[1], max=1600)],
 }
 emitters = {
     "gaussian": [{"kind": "gaussian"}],
     "iso_line": [{"kind": "iso_line", "selection": "fitness_proportional"}],
     "cma_me": [{"kind": "cma_me", "sigma0": 0.2}] * 4,
-    "cma_mae": me_base["emitters"],
+    "cma_mae": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}] * 4,
+    "mixed": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}] * 2 +
+             [{"kind": "iso_line", "selection": "fitness_proportional"}] * 2,
 }
 for grid in grids:
     if grid not in all_grids:

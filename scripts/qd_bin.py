@@ -15,6 +15,10 @@ cell: what a MAP-Elites archive over all of the run's births would hold.
   qd_bin.py heatmap --grid-from CONFIG --png OUT.png TITLE=RUN_DIR...
       the runs' best-fitness-per-cell maps side by side on one colour scale
       (blue low .. yellow high, as `morphogen archive --png`), empty cells grey
+  qd_bin.py union --grid-from CONFIG [--qd-offset O] RUN_DIR...
+      the best fitness per cell over the births of all the runs together: the
+      most of the grid any of them reached, a bound on what a method can
+      claim from this evidence (coverage and QD-score)
   qd_bin.py parents RUN_DIR...
       selection pressure: the share of bred births (those with a parent) whose
       first parent was within 10 % of the best fitness born before them
@@ -135,6 +139,20 @@ def table(args):
         ratio = lambda x, y: f"{x / y:.2f}" if x is not None and y else "—"
         print(f"| {m} ({n} seeds) | {c:.4f} | {q:.0f} | {'—' if b is None else f'{b:.1f}'} | {ratio(c, rc)} | "
               f"{ratio(q, rq)} | {ratio(b, rb)} |")
+
+
+def union(args):
+    grid = read_grid(args.grid_from)
+    pooled = {}
+    for run_dir in args.runs:
+        cells, _, _, _ = bin_run(run_dir, grid)
+        for cell, fitness in cells.items():
+            if cell not in pooled or fitness > pooled[cell]:
+                pooled[cell] = fitness
+    qd = sum(f - args.qd_offset for f in pooled.values())
+    total = n_cells(grid)
+    print(f"union of {len(args.runs)} runs: coverage {len(pooled) / total:.4f} ({len(pooled)} of {total} cells), "
+          f"QD-score {qd:.0f}, best {max(pooled.values()) if pooled else float('nan'):.1f}")
 
 
 # A 3x5 pixel font (upper case, digits, a few signs) for the heatmap's labels.
@@ -289,10 +307,14 @@ def main():
     h.add_argument("--png", required=True)
     h.add_argument("--cell", type=int, default=16, help="pixels per cell (default 16)")
     h.add_argument("runs", nargs="+", metavar="TITLE=RUN_DIR")
+    u = sub.add_parser("union", help="best fitness per cell over all the runs' births together")
+    u.add_argument("--grid-from", required=True, help="a config whose `descriptors` give the grid")
+    u.add_argument("--qd-offset", type=float, default=0.0, help="QD-score sums fitness minus this (default 0)")
+    u.add_argument("runs", nargs="+", metavar="RUN_DIR")
     p = sub.add_parser("parents", help="how often a bred birth's first parent was near the best so far")
     p.add_argument("runs", nargs="+", metavar="RUN_DIR")
     args = parser.parse_args()
-    {"table": table, "heatmap": heatmap, "parents": parents}[args.command](args)
+    {"table": table, "heatmap": heatmap, "union": union, "parents": parents}[args.command](args)
 
 
 if __name__ == "__main__":
