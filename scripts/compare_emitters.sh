@@ -32,6 +32,8 @@
 #   cma_me    4 x {"kind": "cma_me", "sigma0": 0.2}
 #   cma_mae   4 x {"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}
 #   mixed     2 x that cma_mae emitter and 2 x the iso_line one (fitness-proportional)
+#   cma_me2, cma_mae2   2 emitters instead of 4 (for small populations: at
+#             population 50 each keeps the 25 births a generation it has at 100)
 # A GA or random run records every grid's measures, so all grids share one
 # such run per seed.
 #
@@ -87,6 +89,8 @@ emitters = {
     "iso_line": [{"kind": "iso_line", "selection": "fitness_proportional"}],
     "cma_me": [{"kind": "cma_me", "sigma0": 0.2}] * 4,
     "cma_mae": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}] * 4,
+    "cma_me2": [{"kind": "cma_me", "sigma0": 0.2}] * 2,
+    "cma_mae2": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}] * 2,
     "mixed": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}] * 2 +
              [{"kind": "iso_line", "selection": "fitness_proportional"}] * 2,
 }
