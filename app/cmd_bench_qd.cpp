@@ -44,7 +44,7 @@ struct BenchQdOptions {
 
 constexpr int kPerIteration = 540, kCmaEmitters = 15;
 
-MapElitesParams params_for(const std::string& algorithm, CmaCovariance covariance) {
+MapElitesParams params_for(const std::string& algorithm, const std::string& covariance) {
     MapElitesParams p;
     p.population = kPerIteration;
     p.batch = kPerIteration;
@@ -69,7 +69,8 @@ MapElitesParams params_for(const std::string& algorithm, CmaCovariance covarianc
         e.restart = original ? CmaRestart::no_improvement : CmaRestart::basic;
         e.learning_rate = 0.01;
         e.threshold_min = 0.0;
-        e.covariance = covariance;
+        e.covariance = covariance == "diagonal" ? CmaCovariance::diagonal : CmaCovariance::full;
+        e.pyribs_update = covariance == "pyribs";
         p.emitters.assign(kCmaEmitters, e);
     } else {
         throw std::invalid_argument("unknown algorithm " + algorithm);
@@ -86,8 +87,7 @@ QdRun run_one(const std::string& algorithm, const BenchQdOptions& o, std::uint64
     SphereProjection problem(o.dimension);
     Archive archive = Archive::grid(problem.archive_ranges());
     const double cells = static_cast<double>(archive.cells());
-    const CmaCovariance covariance = o.covariance == "full" ? CmaCovariance::full : CmaCovariance::diagonal;
-    MapElites me(params_for(algorithm, covariance), seed, problem, MapElitesState{0, std::move(archive), {}, 0, 0});
+    MapElites me(params_for(algorithm, o.covariance), seed, problem, MapElitesState{0, std::move(archive), {}, 0, 0});
     const auto start = std::chrono::steady_clock::now();
     const std::uint64_t target = o.iterations * kPerIteration;
     while (me.state().births < target) me.step(1);
@@ -220,8 +220,9 @@ void add_bench_qd_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--seed", options->seed, "First seed (default 1)");
     cmd->add_flag("--json", options->json, "Print one JSON object");
     cmd->add_option("--covariance", options->covariance,
-                    "The CMA emitters' covariance model: diagonal (sep-CMA-ES, default) or full (CMA-ES)")
-        ->check(CLI::IsMember({"diagonal", "full"}));
+                    "The CMA emitters' covariance model: diagonal (sep-CMA-ES, default), full (CMA-ES), "
+                    "or pyribs (full CMA-ES updated as pyribs 0.4 does, as the papers' code ran it)")
+        ->check(CLI::IsMember({"diagonal", "full", "pyribs"}));
     cmd->add_option("--covariance-cost", options->covariance_cost,
                     "Instead: time sampling and updating a diagonal and a full covariance at N parameters")
         ->check(CLI::Range(2, 20000));

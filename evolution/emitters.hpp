@@ -51,6 +51,9 @@ struct EmitterSpec {
     CmaParents parents = CmaParents::filter;
     CmaRestart restart = CmaRestart::no_improvement;
     CmaCovariance covariance = CmaCovariance::diagonal;  // cma_me, cma_mae
+    // With the full model: update as pyribs 0.4 does (full_cma_update_pyribs).
+    // Set by bench-qd alone, never read from a config or a checkpoint.
+    bool pyribs_update = false;
 };
 
 // Births of one generation for each emitter: P x share / (sum of shares),

@@ -111,6 +111,57 @@ void full_cma_update(FullCmaState& s, std::span<const std::vector<double>* const
     }
 }
 
+void full_cma_update_pyribs(FullCmaState& s, std::span<const std::vector<double>* const> parents, std::size_t lambda) {
+    const std::size_t n = s.mean.size(), mu = parents.size();
+    const CmaRates r = cma_rates(parents, n, /*separable=*/false);
+    const Eigen::Index N = static_cast<Eigen::Index>(n);
+    const double Nd = static_cast<double>(n);
+    const ConstMatrixView basis(s.basis.data(), N, N);
+    const ConstVectorView scales(s.scales.data(), N);
+
+    // Unscaled steps x_k - m, no clip; the new mean.
+    VectorView mean(s.mean.data(), N);
+    Eigen::MatrixXd y(N, static_cast<Eigen::Index>(mu));
+    Eigen::VectorXd shift = Eigen::VectorXd::Zero(N);
+    for (std::size_t k = 0; k < mu; ++k) {
+        const Eigen::Index col = static_cast<Eigen::Index>(k);
+        y.col(col) = ConstVectorView(parents[k]->data(), N) - mean;
+        shift += r.weights[k] * y.col(col);
+    }
+    mean += shift;
+
+    // p_s with the (possibly stale) C^(-1/2); h_sigma and p_c as pyribs.
+    VectorView path_sigma(s.path_sigma.data(), N), path_c(s.path_c.data(), N);
+    const Eigen::VectorXd whitened = basis * (basis.transpose() * shift).cwiseQuotient(scales);
+    path_sigma = (1.0 - r.cs) * path_sigma + (std::sqrt(r.cs * (2.0 - r.cs) * r.mueff) / s.sigma) * whitened;
+    ++s.updates;
+    const double ps2 = path_sigma.squaredNorm();
+    const double left = ps2 / Nd / (1.0 - std::pow(1.0 - r.cs, 2.0 * static_cast<double>(s.updates)));
+    const bool hsig = left < 2.0 + 4.0 / (Nd + 1.0);
+    path_c = (1.0 - r.cc) * path_c + (hsig ? std::sqrt(r.cc * (2.0 - r.cc) * r.mueff) : 0.0) * shift;
+
+    const double c1a = r.c1 * (1.0 - (hsig ? 0.0 : r.cc * (2.0 - r.cc)));
+    const Eigen::VectorXd w = Eigen::Map<const Eigen::VectorXd>(r.weights.data(), static_cast<Eigen::Index>(mu));
+    MatrixView c(s.covariance.data(), N, N);
+    const RowMatrix next = (1.0 - c1a - r.cmu) * c + r.c1 * path_c * path_c.transpose() +
+                           (r.cmu / (s.sigma * s.sigma)) * (y * w.asDiagonal() * y.transpose());
+    c = 0.5 * (next + next.transpose());
+    s.sigma *= std::exp(std::min(1.0, (r.cs / r.ds) * (ps2 / Nd - 1.0) / 2.0));
+
+    // pyribs' lazy gap, with its rates for lambda / 2 parents.
+    std::vector<double> half(n);
+    std::vector<const std::vector<double>*> halves(std::max<std::size_t>(1, lambda / 2), &half);
+    const CmaRates g = cma_rates(halves, n, /*separable=*/false);
+    const double gap = 0.5 * Nd * static_cast<double>(lambda) / (g.c1 + g.cmu) / (Nd * Nd);
+    if (static_cast<double>(lambda) * static_cast<double>(s.updates - s.decomposed_at) > gap) {
+        s.decomposed_at = s.updates;
+        if (!full_cma_decompose(s)) {
+            s.scales.assign(n, 0.0);
+            s.basis.assign(n * n, 0.0);
+        }
+    }
+}
+
 bool full_cma_converged(const FullCmaState& s) {
     if (!(s.sigma > 0.0) || !std::isfinite(s.sigma)) return true;
     if (s.scales.empty()) return false;

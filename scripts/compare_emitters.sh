@@ -22,6 +22,9 @@
 #   small    hf's ranges in 10 x 10 cells (for a small budget:
 #            scripts/compare_emitters.sh 20 50 with GRIDS=small)
 #   wide     height [10, 20] x footprint [0, 1600], 20 x 20
+#   form     sphericity [0, 1] x lean [0, 8], 20 x 20: compact or thin,
+#            upright or leaning
+#   crown    spread [0, 4] x sphericity [0, 1], 20 x 20
 # The methods (all with configs/map_elites.json's network, growth, fitness and
 # evolution settings; only `emitters` differ between the MAP-Elites rows):
 #   ga        configs/canopy.json with the `descriptors` of every grid (recorded
@@ -83,6 +86,10 @@ all_grids = {
               {"measure": "slenderness", "min": 0, "max": 4, "bins": 20}],
     "small": [dict(d, bins=d["bins"] // 2) for d in hf],
     "wide": [hf[0], dict(hf[1], max=1600)],
+    "form": [{"measure": "sphericity", "min": 0, "max": 1, "bins": 20},
+             {"measure": "lean", "min": 0, "max": 8, "bins": 20}],
+    "crown": [{"measure": "spread", "min": 0, "max": 4, "bins": 20},
+              {"measure": "sphericity", "min": 0, "max": 1, "bins": 20}],
 }
 emitters = {
     "gaussian": [{"kind": "gaussian"}],
@@ -93,6 +100,11 @@ emitters = {
     "cma_mae2": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}] * 2,
     "mixed": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}] * 2 +
              [{"kind": "iso_line", "selection": "fitness_proportional"}] * 2,
+    "mae_a01": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.01}] * 4,
+    "mixed3": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}] * 3 +
+              [{"kind": "iso_line", "selection": "fitness_proportional"}],
+    "mixed_a01": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.01}] * 2 +
+                 [{"kind": "iso_line", "selection": "fitness_proportional"}] * 2,
 }
 for grid in grids:
     if grid not in all_grids:
