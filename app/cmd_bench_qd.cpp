@@ -40,18 +40,19 @@ struct BenchQdOptions {
     bool json = false;
     std::size_t covariance_cost = 0;  // > 0: time the covariance models at this n instead
     std::string covariance = "diagonal";  // the CMA emitters' model
+    double init_range = 1.0;  // generation 0: uniform in [-R, R) per parameter
 };
 
 constexpr int kPerIteration = 540, kCmaEmitters = 15;
 
-MapElitesParams params_for(const std::string& algorithm, const std::string& covariance) {
+MapElitesParams params_for(const std::string& algorithm, const std::string& covariance, double init_range) {
     MapElitesParams p;
     p.population = kPerIteration;
     p.batch = kPerIteration;
     p.crossover = 0.0;
     p.mutation_rate = 1.0;  // pyribs' GaussianEmitter steps every parameter
     p.mutation_sigma = 0.5;
-    p.init_range = 1.0;
+    p.init_range = init_range;
     EmitterSpec e;
     if (algorithm == "map_elites") {
         p.emitters = {e};
@@ -87,7 +88,7 @@ QdRun run_one(const std::string& algorithm, const BenchQdOptions& o, std::uint64
     SphereProjection problem(o.dimension);
     Archive archive = Archive::grid(problem.archive_ranges());
     const double cells = static_cast<double>(archive.cells());
-    MapElites me(params_for(algorithm, o.covariance), seed, problem, MapElitesState{0, std::move(archive), {}, 0, 0});
+    MapElites me(params_for(algorithm, o.covariance, o.init_range), seed, problem, MapElitesState{0, std::move(archive), {}, 0, 0});
     const auto start = std::chrono::steady_clock::now();
     const std::uint64_t target = o.iterations * kPerIteration;
     while (me.state().births < target) me.step(1);
@@ -171,6 +172,7 @@ int run_bench_qd(const BenchQdOptions& o) {
     report["births_per_iteration"] = kPerIteration;
     report["dimension"] = o.dimension;
     report["covariance"] = o.covariance;
+    report["init_range"] = o.init_range;
     if (!o.json)
         std::printf("sphere linear projection, n = %zu, %llu iterations x %d births, 100 x 100 cells, %d seed(s), "
                     "%s covariance\n",
@@ -223,6 +225,10 @@ void add_bench_qd_command(CLI::App& root, CommandRunner& selected) {
                     "The CMA emitters' covariance model: diagonal (sep-CMA-ES, default), full (CMA-ES), "
                     "or pyribs (full CMA-ES updated as pyribs 0.4 does, as the papers' code ran it)")
         ->check(CLI::IsMember({"diagonal", "full", "pyribs"}));
+    cmd->add_option("--init-range", options->init_range,
+                    "Generation 0 draws every parameter uniformly from [-R, R) (default 1); a tiny R starts "
+                    "every CMA emitter at about x0 = 0, as the papers' code does")
+        ->check(CLI::Range(1e-300, 1e6));
     cmd->add_option("--covariance-cost", options->covariance_cost,
                     "Instead: time sampling and updating a diagonal and a full covariance at N parameters")
         ->check(CLI::Range(2, 20000));

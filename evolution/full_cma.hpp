@@ -46,9 +46,10 @@ void full_cma_update(FullCmaState& state, std::span<const std::vector<double>* c
 // The update of pyribs 0.4's CMA-ES (ribs/emitters/opt/_cma_es.py, which
 // the CMA-MAE paper's benchmark code vendors), for bench-qd's reproduction of
 // the published figures only (docs/results.md). It differs from the textbook
-// update above in five ways: p_c accumulates m' - m without dividing by
-// sigma (so the rank-one term is sigma^2 times the textbook's); steps are
-// not clipped; sigma *= exp(min(1, cs/ds (|p_s|^2/n - 1)/2)); h_sigma tests
+// update above in six ways: the rank-one term is weighted by c1^2 instead of
+// c1 (pyribs applies c1 twice); p_c accumulates m' - m without dividing by
+// sigma (so that term is also sigma^2 times the textbook's); steps are not
+// clipped; sigma *= exp(min(1, cs/ds (|p_s|^2/n - 1)/2)); h_sigma tests
 // |p_s|^2/n/(1 - (1-cs)^(2u)) < 2 + 4/(n+1); and basis and scales (used to
 // sample and to whiten) are recomputed only once lambda (u - decomposed_at)
 // > n lambda / (2 n^2 (c1 + cmu)) children have passed since the last time

@@ -4,6 +4,7 @@
 // threshold archive's arithmetic, the same run for any threads, exact resume
 // through the checkpoint's JSON and genome blob, and damaged states refused.
 #include "evolution/emitter_state_json.hpp"
+#include "evolution/cma_rates.hpp"
 #include "evolution/full_cma.hpp"
 #include "evolution/map_elites.hpp"
 #include "evolution/map_elites_state_json.hpp"
@@ -231,17 +232,22 @@ TEST_CASE("pyribs' update: the textbook's at sigma 1, p_c in x units otherwise, 
           "[evolution][cma]") {
     const std::vector<double> a{1.3, -2.2, 0.9}, b{0.7, -1.6, 0.2};
     const std::vector<const std::vector<double>*> parents{&a, &b};
-    // sigma = 1, steps inside the clip, h_sigma true in both: the same mean,
-    // paths and C as the textbook update (only sigma's rule differs).
+    // sigma = 1, steps inside the clip, h_sigma true in both: the same mean
+    // and paths as the textbook update, and its C but for the rank-one term
+    // weighted c1^2 instead of c1 (sigma's rule differs too).
     FullCmaState textbook = full_cma_start({1.0, -2.0, 0.5}, 1.0), pyribs = textbook;
     full_cma_update(textbook, parents);
     full_cma_update_pyribs(pyribs, parents, 4);
+    const double c1 = cma_rates(parents, 3, /*separable=*/false).c1;
     for (std::size_t i = 0; i < 3; ++i) {
         CHECK(pyribs.mean[i] == Approx(textbook.mean[i]).epsilon(1e-14));
         CHECK(pyribs.path_c[i] == Approx(textbook.path_c[i]).epsilon(1e-14));
         CHECK(pyribs.path_sigma[i] == Approx(textbook.path_sigma[i]).epsilon(1e-14));
-        for (std::size_t j = 0; j < 3; ++j)
-            CHECK(pyribs.covariance[i * 3 + j] == Approx(textbook.covariance[i * 3 + j]).epsilon(1e-13));
+        for (std::size_t j = 0; j < 3; ++j) {
+            const double rank_one = textbook.path_c[i] * textbook.path_c[j];
+            CHECK(pyribs.covariance[i * 3 + j] ==
+                  Approx(textbook.covariance[i * 3 + j] - (c1 - c1 * c1) * rank_one).epsilon(1e-13));
+        }
     }
     CHECK(pyribs.sigma != textbook.sigma);
     // sigma = 0.5: p_c is sigma times the textbook's (m' - m, not (m' - m) / sigma).
