@@ -6,8 +6,9 @@
 # usage: scripts/compare_emitters.sh [GENERATIONS] [POPULATION] [SEEDS...]
 #   defaults: 200 100 1 2 3 -> B = POPULATION * (GENERATIONS + 1) = 20,100
 #   births per run; results in out/compare_emitters/ (OUT=... to change)
-#   GRIDS="hf fine shape"   which grids (default these three; also shipped, small, wide)
-#   METHODS="ga random gaussian iso_line cma_me cma_mae mixed"   which methods
+#   GRIDS="hf fine shape"   which grids (default these three; also shipped,
+#            small, wide, form, crown, posture, shape_fine, shape3d)
+#   METHODS="ga random gaussian iso_line cma_me cma_mae mae_a01 mixed"   which methods
 #   (runs go in the order of METHODS, every seed of a method before the next)
 #   JOBS=2     runs side by side (default 1), THREADS=1 threads per run,
 #   EXE=PATH   the executable (default build/morphogen)
@@ -25,6 +26,11 @@
 #   form     sphericity [0, 1] x lean [0, 8], 20 x 20: compact or thin,
 #            upright or leaning
 #   crown    spread [0, 4] x sphericity [0, 1], 20 x 20
+#   posture  spread [0, 4] x lean [0, 8], 20 x 20: crown over base, and how
+#            far the top half stands off the bottom half
+#   shape_fine  shape's ranges in 40 x 40 cells
+#   shape3d  spread [0, 4] x slenderness [0, 4] x lean [0, 8], 10 x 10 x 10
+#            (a table only: heatmaps are drawn for grids of two descriptors)
 # The methods (all with configs/map_elites.json's network, growth, fitness and
 # evolution settings; only `emitters` differ between the MAP-Elites rows):
 #   ga        configs/canopy.json with the `descriptors` of every grid (recorded
@@ -34,7 +40,10 @@
 #   iso_line  [{"kind": "iso_line", "selection": "fitness_proportional"}]
 #   cma_me    4 x {"kind": "cma_me", "sigma0": 0.2}
 #   cma_mae   4 x {"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}
-#   mixed     2 x that cma_mae emitter and 2 x the iso_line one (fitness-proportional)
+#             (shipped until 2026-11-25)
+#   mae_a01   the same with "learning_rate": 0.01 (the shipped emitters)
+#   mixed     2 x that cma_mae emitter (alpha 0.1) and 2 x the iso_line one
+#             (fitness-proportional); mixed3: 3 + 1; mixed_a01: 2 + 2 with alpha 0.01
 #   cma_me2, cma_mae2   2 emitters instead of 4 (for small populations: at
 #             population 50 each keeps the 25 births a generation it has at 100)
 # A GA or random run records every grid's measures, so all grids share one
@@ -58,7 +67,7 @@ out=${OUT:-out/compare_emitters}
 threads=${THREADS:-1}
 jobs=${JOBS:-1}
 read -r -a grids <<< "${GRIDS:-hf fine shape}"
-read -r -a methods <<< "${METHODS:-ga random gaussian iso_line cma_me cma_mae mixed}"
+read -r -a methods <<< "${METHODS:-ga random gaussian iso_line cma_me cma_mae mae_a01 mixed}"
 budget=$(( population * (generations + 1) ))
 mkdir -p "$out"
 
@@ -90,6 +99,13 @@ all_grids = {
              {"measure": "lean", "min": 0, "max": 8, "bins": 20}],
     "crown": [{"measure": "spread", "min": 0, "max": 4, "bins": 20},
               {"measure": "sphericity", "min": 0, "max": 1, "bins": 20}],
+    "posture": [{"measure": "spread", "min": 0, "max": 4, "bins": 20},
+                {"measure": "lean", "min": 0, "max": 8, "bins": 20}],
+    "shape_fine": [{"measure": "spread", "min": 0, "max": 4, "bins": 40},
+                   {"measure": "slenderness", "min": 0, "max": 4, "bins": 40}],
+    "shape3d": [{"measure": "spread", "min": 0, "max": 4, "bins": 10},
+                {"measure": "slenderness", "min": 0, "max": 4, "bins": 10},
+                {"measure": "lean", "min": 0, "max": 8, "bins": 10}],
 }
 emitters = {
     "gaussian": [{"kind": "gaussian"}],
@@ -111,7 +127,9 @@ for grid in grids:
         sys.exit(f"compare_emitters: unknown grid {grid!r} (one of {', '.join(all_grids)})")
 # Every grid's measures, each once, for the GA and random runs to record.
 recorded = {}
-for g in all_grids.values():
+for name, g in all_grids.items():
+    if name == "shipped":  # one of the named grids, which give the order
+        continue
     for d in g:
         recorded.setdefault(d["measure"], d)
 recorded = list(recorded.values())
@@ -174,5 +192,7 @@ for grid in "${grids[@]}"; do
   done <<< "$plan"
   echo "## grid $grid"
   python3 scripts/qd_bin.py table --grid-from "$out/$grid.json" --budget "$budget" --reference ga "${runs[@]}"
-  python3 scripts/qd_bin.py heatmap --grid-from "$out/$grid.json" --png "$out/$grid-heatmaps-seed-${seeds[0]}.png" "${first[@]}"
+  if [ "$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["descriptors"]))' "$out/$grid.json")" = 2 ]; then
+    python3 scripts/qd_bin.py heatmap --grid-from "$out/$grid.json" --png "$out/$grid-heatmaps-seed-${seeds[0]}.png" "${first[@]}"
+  fi
 done
