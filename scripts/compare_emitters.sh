@@ -42,6 +42,9 @@
 #   cma_mae   4 x {"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}
 #             (shipped until 2026-11-25)
 #   mae_a01   the same with "learning_rate": 0.01 (the shipped emitters)
+#   mae_a04   the same with "learning_rate": 0.04 (alpha for a 4 x finer grid
+#             by the CMA-MAE paper's rule 1 - (1 - alpha)^(cells ratio))
+#   mae_a025  the same with "learning_rate": 0.025 (that rule for 2.5 x the cells)
 #   mixed     2 x that cma_mae emitter (alpha 0.1) and 2 x the iso_line one
 #             (fitness-proportional); mixed3: 3 + 1; mixed_a01: 2 + 2 with alpha 0.01
 #   cma_me2, cma_mae2   2 emitters instead of 4 (for small populations: at
@@ -117,6 +120,10 @@ emitters = {
     "mixed": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}] * 2 +
              [{"kind": "iso_line", "selection": "fitness_proportional"}] * 2,
     "mae_a01": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.01}] * 4,
+    # alpha for 4 x the cells by the CMA-MAE paper's resolution rule, 1 - (1 - 0.01)^4
+    "mae_a04": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.04}] * 4,
+    # the same rule for 2.5 x the cells (shape3d's 1,000): 1 - (1 - 0.01)^2.5
+    "mae_a025": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.025}] * 4,
     "mixed3": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.1}] * 3 +
               [{"kind": "iso_line", "selection": "fitness_proportional"}],
     "mixed_a01": [{"kind": "cma_mae", "sigma0": 0.2, "learning_rate": 0.01}] * 2 +
