@@ -171,4 +171,21 @@ TEST_CASE("bench-qd runs the sphere benchmark: every algorithm, reproducibly, an
     for (const char* key : {"diagonal_sample_ms", "diagonal_update_ms", "full_sample_ms", "full_eigendecomposition_ms"})
         CHECK(nlohmann::json::parse(cost.output).contains(key));
     CHECK(run_morphogen("bench-qd --algorithm nsga").code != 0);
+    // The papers' CMA-ES update from x0 ~ 0: recorded in the report, reproducible, and
+    // not the textbook full update's numbers.
+    const char* pyribs = "bench-qd --iterations 4 --algorithm cma_me --covariance pyribs --init-range 1e-9 --json";
+    const CliResult p1 = run_morphogen(pyribs), p2 = run_morphogen(pyribs);
+    REQUIRE(p1.code == 0);
+    const auto pr = nlohmann::json::parse(p1.output);
+    CHECK(pr["covariance"] == "pyribs");
+    CHECK(pr["init_range"].get<double>() == 1e-9);
+    REQUIRE(p2.code == 0);
+    CHECK(nlohmann::json::parse(p2.output)["algorithms"]["cma_me"]["runs"][0]["qd_score"] ==
+          pr["algorithms"]["cma_me"]["runs"][0]["qd_score"]);
+    const CliResult full = run_morphogen("bench-qd --iterations 4 --algorithm cma_me --covariance full --init-range 1e-9 --json");
+    REQUIRE(full.code == 0);
+    CHECK(nlohmann::json::parse(full.output)["algorithms"]["cma_me"]["mean_qd_score"] !=
+          pr["algorithms"]["cma_me"]["mean_qd_score"]);
+    CHECK(run_morphogen("bench-qd --covariance sparse").code != 0);
+    CHECK(run_morphogen("bench-qd --init-range 0").code != 0);
 }
