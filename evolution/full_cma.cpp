@@ -18,6 +18,17 @@ using VectorView = Eigen::Map<Eigen::VectorXd>;
 using ConstVectorView = Eigen::Map<const Eigen::VectorXd>;
 
 Eigen::Index size_of(const std::vector<double>& v) { return static_cast<Eigen::Index>(v.size()); }
+
+// After an update: B and d from the new C. If rounding made C indefinite,
+// zero scales make the emitter's stop test fire (full_cma_converged) and it
+// restarts.
+void decompose_after_update(FullCmaState& s) {
+    const std::size_t n = s.mean.size();
+    if (!full_cma_decompose(s)) {
+        s.scales.assign(n, 0.0);
+        s.basis.assign(n * n, 0.0);
+    }
+}
 }  // namespace
 
 FullCmaState full_cma_start(std::vector<double> mean, double sigma) {
@@ -103,12 +114,7 @@ void full_cma_update(FullCmaState& s, std::span<const std::vector<double>* const
     const RowMatrix next = keep * c + r.c1 * path_c * path_c.transpose() + r.cmu * (y * w.asDiagonal() * y.transpose());
     c = 0.5 * (next + next.transpose());  // a + b == b + a: symmetric to the bit
     s.sigma *= std::exp(std::min(1.0, (r.cs / r.ds) * (ps_norm / r.chi - 1.0)));
-    if (!full_cma_decompose(s)) {
-        // Rounding made C indefinite: the emitter's stop test fires on the
-        // empty scales (full_cma_converged) and it restarts.
-        s.scales.assign(n, 0.0);
-        s.basis.assign(n * n, 0.0);
-    }
+    decompose_after_update(s);
 }
 
 void full_cma_update_pyribs(FullCmaState& s, std::span<const std::vector<double>* const> parents, std::size_t lambda) {
@@ -157,10 +163,7 @@ void full_cma_update_pyribs(FullCmaState& s, std::span<const std::vector<double>
     const double gap = 0.5 * Nd * static_cast<double>(lambda) / (g.c1 + g.cmu) / (Nd * Nd);
     if (static_cast<double>(lambda) * static_cast<double>(s.updates - s.decomposed_at) > gap) {
         s.decomposed_at = s.updates;
-        if (!full_cma_decompose(s)) {
-            s.scales.assign(n, 0.0);
-            s.basis.assign(n * n, 0.0);
-        }
+        decompose_after_update(s);
     }
 }
 
