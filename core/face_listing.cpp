@@ -54,7 +54,7 @@ void FaceListing::refresh(const std::function<bool(int, int)>& keep) {
     if (pending_.empty()) return;
     // A grid full of stale entries (or none yet) is built again from the
     // listing boxes; otherwise the relisted ones are already in it.
-    if (!grid_built_ || grid_.late_entries() > grid_.built_entries() + 64) rebuild_grid();
+    if (!grid_built_ || grid_.late_entries() > grid_.built_entries() / 4 + 64) rebuild_grid();
     for (const int f : pending_) {
         for (const int g : partners_[f])
             if (!is_pending_[g]) unlink(f, g);
