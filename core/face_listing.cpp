@@ -52,8 +52,10 @@ void FaceListing::unlink(int f, int g) {
 
 void FaceListing::refresh(const std::function<bool(int, int)>& keep) {
     if (pending_.empty()) return;
-    // A grid full of stale entries (or none yet) is built again from the
-    // listing boxes; otherwise the relisted ones are already in it.
+    // A grid whose stale entries reach a quarter of its built ones (or none
+    // yet) is built again from the listing boxes; otherwise the relisted ones
+    // are already in it. Queries walk the late entries one by one, so a
+    // fresher grid pays (docs/performance.md: 6 % of the guard's time).
     if (!grid_built_ || grid_.late_entries() > grid_.built_entries() / 4 + 64) rebuild_grid();
     for (const int f : pending_) {
         for (const int g : partners_[f])
