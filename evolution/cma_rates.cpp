@@ -7,10 +7,13 @@
 namespace morphogen {
 
 CmaRates cma_rates(std::span<const std::vector<double>* const> parents, std::size_t n, bool separable) {
-    const std::size_t mu = parents.size();
-    if (mu == 0) throw std::invalid_argument("a CMA update needs at least one parent");
     for (const std::vector<double>* p : parents)
         if (p->size() != n) throw std::invalid_argument("a CMA parent has the wrong number of parameters");
+    return cma_rates_for(parents.size(), n, separable);
+}
+
+CmaRates cma_rates_for(std::size_t mu, std::size_t n, bool separable) {
+    if (mu == 0) throw std::invalid_argument("a CMA update needs at least one parent");
     const double N = static_cast<double>(n);
     CmaRates r;
     r.weights.resize(mu);

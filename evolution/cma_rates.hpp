@@ -22,5 +22,7 @@ struct CmaRates {
 // `separable`: c1 and cmu scaled by (n + 2) / 3 (Ros & Hansen 2008). Throws
 // std::invalid_argument for no parents or one of another length than n.
 CmaRates cma_rates(std::span<const std::vector<double>* const> parents, std::size_t n, bool separable);
+// The same for mu parents, unchecked but for mu > 0.
+CmaRates cma_rates_for(std::size_t mu, std::size_t n, bool separable);
 
 }  // namespace morphogen

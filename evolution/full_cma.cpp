@@ -157,9 +157,7 @@ void full_cma_update_pyribs(FullCmaState& s, std::span<const std::vector<double>
     s.sigma *= std::exp(std::min(1.0, (r.cs / r.ds) * (ps2 / Nd - 1.0) / 2.0));
 
     // pyribs' lazy gap, with its rates for lambda / 2 parents.
-    std::vector<double> half(n);
-    std::vector<const std::vector<double>*> halves(std::max<std::size_t>(1, lambda / 2), &half);
-    const CmaRates g = cma_rates(halves, n, /*separable=*/false);
+    const CmaRates g = cma_rates_for(std::max<std::size_t>(1, lambda / 2), n, /*separable=*/false);
     const double gap = 0.5 * Nd * static_cast<double>(lambda) / (g.c1 + g.cmu) / (Nd * Nd);
     if (static_cast<double>(lambda) * static_cast<double>(s.updates - s.decomposed_at) > gap) {
         s.decomposed_at = s.updates;
