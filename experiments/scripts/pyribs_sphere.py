@@ -2,18 +2,18 @@
 """CMA-ME on the sphere linear-projection benchmark, run by the papers' own code.
 
 The CMA-MAE authors' repository (github.com/icaros-usc/cma_mae) vendors the
-pyribs 0.4 that produced the published QD-scores (docs/results.md, "MAP-Elites
-emitters on the field's own benchmark"). This script runs its CMA-ME setting
+pyribs 0.4 that produced the published QD-scores (experiments/
+2026-11-24-emitters-sphere-benchmark.md). This script runs its CMA-ME setting
 (15 ImprovementEmitters, batch 36, sigma0 0.5, x0 = 0, "mu" parents, "basic"
 restarts, a 100 x 100 grid over [-256, 256]^2, a passive elitist archive for
 the QD-score) with the benchmark of docs/algorithm.md section 9.10, so that
-`morphogen bench-qd --covariance pyribs` can be compared with the code it
+`build/morphogen-bench-qd --covariance pyribs` can be compared with the code it
 imitates. It needs numpy (Debian: python3-numpy, run with /usr/bin/python3)
 and a checkout of that repository; the repository's other dependencies
 (numba, pandas, scipy, ...) are replaced by stand-ins that run its code as
 plain Python, so a run of 10,000 iterations takes some 8 minutes.
 
-usage: /usr/bin/python3 scripts/pyribs_sphere.py CMA_MAE_CHECKOUT [--iterations N] [--seeds S...]
+usage: /usr/bin/python3 experiments/scripts/pyribs_sphere.py CMA_MAE_CHECKOUT [--iterations N] [--seeds S...]
 prints one line per 1,000 iterations and per seed: QD-score (sum of the
 elites' objectives / 10,000 cells), coverage in percent, restarts.
 """

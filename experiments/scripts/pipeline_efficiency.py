@@ -2,7 +2,7 @@
 """How busy T threads stay under a birth schedule (docs/algorithm.md §8.4),
 simulated from measured evaluation times.
 
-Usage: scripts/pipeline_efficiency.py SUMMARY.csv [--threads 2,16] [--population 100]
+Usage: experiments/scripts/pipeline_efficiency.py SUMMARY.csv [--threads 2,16] [--population 100]
                                        [--births 4000] [--seed 1]
 
 SUMMARY.csv is a `morphogen gallery --config ... --format none` summary: its

@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # MAP-Elites against the GA and random search on the canopy problem, at an
 # equal budget of births, every run binned into the same descriptor grid
-# (docs/results.md "MAP-Elites against the GA and random search").
+# (experiments/2026-11-23-map-elites-vs-ga.md).
 #
-# usage: scripts/compare_qd.sh [GENERATIONS] [POPULATION] [SEEDS...]
+# usage: experiments/scripts/compare_qd.sh [GENERATIONS] [POPULATION] [SEEDS...]
 #   defaults: 50 100 1 2 3 -> budget B = POPULATION * (GENERATIONS + 1)
 #   = 5,100 births per run; results in out/compare_qd/ (OUT=... to change)
 #   ME_CONFIG=... replaces configs/map_elites.json (its descriptors are the grid)
@@ -18,13 +18,13 @@
 # A run whose history.csv is complete is not run again, and one that was
 # stopped is resumed (to the same bytes as an unbroken run), so the script can
 # be stopped and re-run, or re-run to redo the table (a run whose config
-# changed is started again). Then scripts/qd_bin.py bins every lineage.csv
+# changed is started again). Then experiments/scripts/qd_bin.py bins every lineage.csv
 # into the grid of the MAP-Elites config (best fitness per cell) and prints the
 # table: coverage, QD-score (sum of fitness - 0 over occupied cells) and best
 # canopy per method and seed, with means; and draws the three methods'
 # fitness heatmaps for the first seed side by side (heatmaps-seed-S.png).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 generations=${1:-50}
 population=${2:-100}
 shift $(( $# > 2 ? 2 : $# ))
@@ -87,7 +87,7 @@ runs=()
 for s in "${seeds[@]}"; do
   for method in ga me random; do runs+=("$method/$s=$out/$method-$s"); done
 done
-python3 scripts/qd_bin.py table --grid-from "$me_config" --budget "$budget" "${runs[@]}"
+python3 experiments/scripts/qd_bin.py table --grid-from "$me_config" --budget "$budget" "${runs[@]}"
 s=${seeds[0]}
-python3 scripts/qd_bin.py heatmap --grid-from "$me_config" --png "$out/heatmaps-seed-$s.png" \
+python3 experiments/scripts/qd_bin.py heatmap --grid-from "$me_config" --png "$out/heatmaps-seed-$s.png" \
   "GA=$out/ga-$s" "MAP-Elites=$out/me-$s" "random=$out/random-$s"

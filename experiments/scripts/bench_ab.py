@@ -1,12 +1,12 @@
 #!/usr/bin/env python3
 """Compares two morphogen binaries on the whole growth benchmark, alternating.
 
-usage: scripts/bench_ab.py OLD_BINARY NEW_BINARY [PAIRS]   (default 8 pairs)
+usage: experiments/scripts/bench_ab.py OLD_BINARY NEW_BINARY [PAIRS]   (default 8 pairs)
 
 Runs `bench --json --threads 1 --repeat 3` with each binary in turn, swapping
 which goes first every pair, and prints the median and geometric mean of the
 per-pair speed ratios NEW/OLD for think and for whole growth. This is how
-changes that the kernel-only loop (scripts/kernel_ab) cannot judge are
+changes that the kernel-only loop (experiments/scripts/kernel_ab) cannot judge are
 decided: cache effects between the gather and the kernel, or anything outside
 the kernel. On a shared machine a single run proves little; the pairs share
 the machine's state of the moment, so their ratios are what counts.

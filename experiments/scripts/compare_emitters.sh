@@ -1,9 +1,9 @@
 #!/usr/bin/env bash
 # Every MAP-Elites emitter kind against the GA and random search on the canopy
 # problem, on three descriptor grids, at an equal budget of births
-# (docs/results.md "Every emitter on three grids").
+# (experiments/2026-11-25-every-emitter-three-grids.md).
 #
-# usage: scripts/compare_emitters.sh [GENERATIONS] [POPULATION] [SEEDS...]
+# usage: experiments/scripts/compare_emitters.sh [GENERATIONS] [POPULATION] [SEEDS...]
 #   defaults: 200 100 1 2 3 -> B = POPULATION * (GENERATIONS + 1) = 20,100
 #   births per run; results in out/compare_emitters/ (OUT=... to change)
 #   GRIDS="hf fine shape"   which grids (default these three; also shipped,
@@ -21,7 +21,7 @@
 #   shape    spread [0, 4] x slenderness [0, 4], 20 x 20: two shape ratios the
 #            canopy fitness does not bound
 #   small    hf's ranges in 10 x 10 cells (for a small budget:
-#            scripts/compare_emitters.sh 20 50 with GRIDS=small)
+#            experiments/scripts/compare_emitters.sh 20 50 with GRIDS=small)
 #   wide     height [10, 20] x footprint [0, 1600], 20 x 20
 #   form     sphericity [0, 1] x lean [0, 8], 20 x 20: compact or thin,
 #            upright or leaning
@@ -55,11 +55,11 @@
 # A run whose history.csv is complete is not run again, one that was stopped is
 # resumed (to the same bytes as an unbroken run), and one whose config changed
 # is started again, so the script can be stopped and re-run. Then
-# scripts/qd_bin.py bins every run's lineage.csv into each grid and prints one
+# experiments/scripts/qd_bin.py bins every run's lineage.csv into each grid and prints one
 # table per grid (coverage, QD-score, best canopy, ratios to the GA), and draws
 # the methods' heatmaps for the first seed (GRID-heatmaps-seed-S.png).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 generations=${1:-200}
 population=${2:-100}
 shift $(( $# > 2 ? 2 : $# ))
@@ -198,8 +198,8 @@ for grid in "${grids[@]}"; do
     first+=("$method=$out/$name-${seeds[0]}")
   done <<< "$plan"
   echo "## grid $grid"
-  python3 scripts/qd_bin.py table --grid-from "$out/$grid.json" --budget "$budget" --reference ga "${runs[@]}"
+  python3 experiments/scripts/qd_bin.py table --grid-from "$out/$grid.json" --budget "$budget" --reference ga "${runs[@]}"
   if [ "$(python3 -c 'import json, sys; print(len(json.load(open(sys.argv[1]))["descriptors"]))' "$out/$grid.json")" = 2 ]; then
-    python3 scripts/qd_bin.py heatmap --grid-from "$out/$grid.json" --png "$out/$grid-heatmaps-seed-${seeds[0]}.png" "${first[@]}"
+    python3 experiments/scripts/qd_bin.py heatmap --grid-from "$out/$grid.json" --png "$out/$grid-heatmaps-seed-${seeds[0]}.png" "${first[@]}"
   fi
 done

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Fits the rational 2^y of the network kernel's sigmoid (core/network_kernel.cpp).
 
-usage: scripts/fit_sigmoid.py        (needs mpmath: Debian's python3-mpmath)
+usage: experiments/scripts/fit_sigmoid.py        (needs mpmath: Debian's python3-mpmath)
 
 2^y = (q + p) / (q - p) on |y| <= 1/2, with p = y (d0 + d1 x + d2 x^2) and
 q = c0 + c1 x + x^2, x = y^2: equivalently p / q = tanh(y ln2 / 2), which is

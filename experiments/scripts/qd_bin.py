@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Bins runs' lineage.csv into one MAP-Elites grid (docs/results.md).
+"""Bins runs' lineage.csv into one MAP-Elites grid (experiments/, from
+2026-11-23-map-elites-vs-ga.md on).
 
 Every run written with a `descriptors` list (MAP-Elites always; a GA when its
 config declares them) records each birth's descriptor values in lineage.csv

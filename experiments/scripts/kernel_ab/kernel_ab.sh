@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Compares two versions of the network kernel side by side (see kernel_ab.cpp).
-# usage: scripts/kernel_ab/kernel_ab.sh OLD_KERNEL.cpp NEW_KERNEL.cpp [ROUNDS]
+# usage: experiments/scripts/kernel_ab/kernel_ab.sh OLD_KERNEL.cpp NEW_KERNEL.cpp [ROUNDS]
 # e.g.   git show HEAD:core/network_kernel.cpp > /tmp/old.cpp
-#        scripts/kernel_ab/kernel_ab.sh /tmp/old.cpp core/network_kernel.cpp
+#        experiments/scripts/kernel_ab/kernel_ab.sh /tmp/old.cpp core/network_kernel.cpp
 # FLAGS_A / FLAGS_B add compiler flags to one side (e.g. FLAGS_B=-falign-loops=64).
 # An A/A run (the same file twice) gives 1.00 to 1.05 depending on where the
 # two copies land in memory: run both orders and take the geometric mean.
@@ -12,7 +12,7 @@ if [[ $# -lt 2 ]]; then
     exit 2
 fi
 here="$(cd "$(dirname "$0")" && pwd)"
-root="$(cd "$here/../.." && pwd)"
+root="$(cd "$here/../../.." && pwd)"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 # The flags core/CMakeLists.txt gives the kernel file, plus the project's.

@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# The trees of docs/results.md ("Trees"): configs/tree.json on several seeds,
+# The trees of experiments/2026-11-24-trees.md: configs/tree.json on several seeds,
 # each best checked by scripts/tree_shape.py, the bests drawn side by side;
 # then configs/tree_map.json (MAP-Elites over trunk_ratio x height) on the
 # first seed, its map of elites drawn.
 #
-# usage: scripts/trees.sh [SEEDS...]     (default 1 2 3; results in out/trees/, OUT=... to change)
+# usage: experiments/scripts/trees.sh [SEEDS...]     (default 1 2 3; results in out/trees/, OUT=... to change)
 #   MAP=0 skips the MAP-Elites run; THREADS (default 1) threads per run.
 #
 # A run whose history.csv is complete is not run again, and one that was
@@ -13,7 +13,7 @@
 # Cost: 6,100 births a run, 30-60 min of one core each (the collision guard
 # is most of it, docs/performance.md).
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 seeds=("$@")
 [ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3)
 exe=build/morphogen

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
 # GA against random search at an equal budget of evaluations, over several
-# seeds (docs/results.md). The GA's budget is population * (generations + 1)
-# births; random search grows that many random genomes and keeps the best.
-# usage: scripts/compare_random.sh [CONFIG] [GENERATIONS] [SEEDS...]
+# seeds (experiments/2026-11-21-ga-vs-random-search.md). The GA's budget is
+# population * (generations + 1) births; random search grows that many random
+# genomes and keeps the best.
+# usage: experiments/scripts/compare_random.sh [CONFIG] [GENERATIONS] [SEEDS...]
 #   defaults: configs/canopy.json 40 1 2 3   -> results in out/compare/
 set -euo pipefail
-cd "$(dirname "$0")/.."
+cd "$(dirname "$0")/../.."
 config=${1:-configs/canopy.json}
 generations=${2:-40}
 shift $(( $# > 2 ? 2 : $# ))
