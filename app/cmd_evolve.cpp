@@ -70,7 +70,13 @@ int run_evolve(const EvolveOptions& o) {
     session.state.lineage_bytes = session.lineage.size();
     session.state.lineage_hash = session.lineage.hash_hex();
     if (config.algorithm == Algorithm::map_elites) {
-        session.state.elites = initial_elites_state(config, resolve_threads(config.run.threads));
+        session.state.elites = initial_elites_state(config, resolve_threads(config.run.threads), session.log.both.get());
+        if (!session.state.elites) {
+            session.log.both->warn("stopped by signal {} while placing the CVT centroids, before the first "
+                                   "checkpoint: nothing was lost; start it again with the same command",
+                                   StopSignals::signal_number());
+            return exit_code::interrupted;
+        }
         write_file_atomically(paths.archive, archive_csv(session.state.elites->archive));
     }
     save_checkpoint(paths.checkpoint, session.state);

@@ -85,7 +85,8 @@ int run_resume(const ResumeOptions& o) {
             header = lineage_header;
             lineage_descriptor_columns = 0;
         }
-        check_checkpoint_against_lineage(state, lineage_prefix, P, header);
+        const BirthReplay replay = birth_replay(config);
+        check_checkpoint_against_lineage(state, lineage_prefix, P, header, &replay);
     } catch (const std::invalid_argument& e) {
         throw CheckpointError("checkpoint " + paths.checkpoint.string() + " refused: it contradicts " +
                               paths.lineage.string() + ": " + e.what());

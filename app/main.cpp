@@ -3,6 +3,7 @@
 // Under mpirun/srun (cluster/launch.hpp) `evolve` and `resume` run as one job:
 // rank 0 runs the command, the other ranks score its genomes (cluster/).
 #include "app/commands.hpp"
+#include "app/numeric_options.hpp"
 #include "cluster/launch.hpp"
 #include "cluster/protocol.hpp"
 #include "cluster/remote_evaluator.hpp"
@@ -14,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <csignal>
 #include <exception>
 #include <iostream>
 #include <optional>
@@ -71,6 +73,10 @@ int run_worker(cluster::World& world) {
 }  // namespace
 
 int main(int argc, char** argv) {
+    // A file-size limit (ulimit -f) then makes a write fail with EFBIG, which
+    // names the file and exits 3 like a full disk, instead of killing the
+    // process by SIGXFSZ mid-write with no message.
+    std::signal(SIGXFSZ, SIG_IGN);
     // Before anything else: plain `morphogen` never touches MPI.
     const std::optional<cluster::Launch> launch = cluster::detect_launch();
     if (launch && launch->size > 1 && !cluster::built_with_mpi()) {
@@ -93,13 +99,13 @@ int main(int argc, char** argv) {
     add_gallery_command(app, selected);
     add_render_command(app, selected);
     add_bench_command(app, selected);
-    add_bench_qd_command(app, selected);
     add_evolve_command(app, selected);
     add_resume_command(app, selected);
     add_validate_command(app, selected);
     add_score_command(app, selected);
     add_archive_command(app, selected);
     add_report_command(app, selected);
+    check_numeric_options(app);
 
     try {
         app.parse(argc, argv);

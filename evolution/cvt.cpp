@@ -30,7 +30,8 @@ std::size_t nearest_centroid(std::span<const double> centroids, std::span<const 
     return best;
 }
 
-std::vector<double> cvt_centroids(std::uint64_t seed, std::uint64_t cells, std::size_t dimensions, int threads) {
+std::vector<double> cvt_centroids(std::uint64_t seed, std::uint64_t cells, std::size_t dimensions, int threads,
+                                  const CvtWatch& watch) {
     if (cells < 1 || cells > kMaxCvtCells)
         throw std::invalid_argument("a CVT archive places 1 to " + std::to_string(kMaxCvtCells) + " cells, not " +
                                     std::to_string(cells));
@@ -49,15 +50,22 @@ std::vector<double> cvt_centroids(std::uint64_t seed, std::uint64_t cells, std::
     std::vector<std::size_t> members(k);
     for (int round = 0; round < kCvtLloydIterations; ++round) {
         int changed = 0;
+        // In blocks, so that a stop is noticed within a fraction of a round;
+        // each sample's assignment is its own, so blocks change no result.
+        for (std::size_t first = 0; first < count; first += kCvtStopBlock) {
+            if (watch.stop && watch.stop()) return {};
+            const std::size_t last = std::min(count, first + kCvtStopBlock);
 #pragma omp parallel for schedule(static) num_threads(threads) reduction(| : changed)
-        for (std::size_t j = 0; j < count; ++j) {
-            const std::size_t nearest =
-                nearest_centroid(centroids, std::span<const double>(samples.data() + j * dimensions, dimensions));
-            if (nearest != assignment[j]) {
-                assignment[j] = nearest;
-                changed = 1;
+            for (std::size_t j = first; j < last; ++j) {
+                const std::size_t nearest =
+                    nearest_centroid(centroids, std::span<const double>(samples.data() + j * dimensions, dimensions));
+                if (nearest != assignment[j]) {
+                    assignment[j] = nearest;
+                    changed = 1;
+                }
             }
         }
+        if (watch.round_done) watch.round_done(round + 1);
         if (!changed) break;
         std::fill(sums.begin(), sums.end(), 0.0);
         std::fill(members.begin(), members.end(), 0);

@@ -16,6 +16,7 @@
 // centroids are the same for every thread count.
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <span>
 #include <vector>
@@ -35,9 +36,19 @@ inline constexpr std::uint64_t kMaxCvtCells = 10'000;
 // cells x point.size(), non-empty.
 std::size_t nearest_centroid(std::span<const double> centroids, std::span<const double> point);
 
-// Row-major cells x dimensions centroids in [0,1]^dimensions. Throws
-// std::invalid_argument unless 1 <= cells <= kMaxCvtCells and dimensions >= 1.
-// threads <= 0: OpenMP's default.
-std::vector<double> cvt_centroids(std::uint64_t seed, std::uint64_t cells, std::size_t dimensions, int threads = 0);
+// Who watches a long placement (10,000 cells take minutes): `stop` is asked
+// between blocks of kCvtStopBlock samples and ends the placement when true;
+// `round_done(r)` is told after Lloyd round r (1-based). Either may be empty.
+struct CvtWatch {
+    std::function<bool()> stop;
+    std::function<void(int round)> round_done;
+};
+inline constexpr std::size_t kCvtStopBlock = 4096;
+
+// Row-major cells x dimensions centroids in [0,1]^dimensions; empty if
+// watch.stop ended the placement. Throws std::invalid_argument unless
+// 1 <= cells <= kMaxCvtCells and dimensions >= 1. threads <= 0: OpenMP's default.
+std::vector<double> cvt_centroids(std::uint64_t seed, std::uint64_t cells, std::size_t dimensions, int threads = 0,
+                                  const CvtWatch& watch = {});
 
 }  // namespace morphogen

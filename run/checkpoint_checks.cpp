@@ -4,6 +4,8 @@
 #include "evolution/operators.hpp"
 #include "evolution/population_stats.hpp"
 #include "run/run_records.hpp"
+#include "core/network.hpp"
+#include "evolution/schedule.hpp"
 
 #include <algorithm>
 #include <charconv>
@@ -222,7 +224,58 @@ void check_history_by_replay(const RunState& s, const std::vector<LineageRow>& r
         check_row_stats(s.history[g], g, summarize(population), false, "the population lineage.csv records");
     }
 }
+// The parents of every pending birth, which the checkpoint's hash alone does
+// not protect. GA: the population at the birth's source state is replayed
+// from lineage.csv's fitness column (insert_child, as above) and the birth's
+// parents re-drawn from it with the birth's own stream (conceive; the
+// replayed members carry zero parameters, and the draws that pick parents do
+// not read parameters): they must be exactly the stored ones, in order.
+// MAP-Elites: an emitter's parent is an elite, so a valid birth recorded
+// before the source state.
+void check_pending_parents(const RunState& s, const std::vector<LineageRow>& rows, const BirthReplay& replay,
+                           const BirthSchedule& schedule) {
+    const auto P = static_cast<std::uint64_t>(replay.params.population);
+    if (s.elites) {
+        for (std::size_t i = 0; i < s.pending.size(); ++i) {
+            const Individual& child = s.pending[i];
+            const std::uint64_t source = schedule.source(child.id);
+            for (const std::optional<std::uint64_t>& parent : {child.parent1, child.parent2})
+                if (parent && (*parent >= source || *parent >= rows.size() || !rows[*parent].valid))
+                    contradiction(at("pending", i) + " (birth " + std::to_string(child.id) + ") has parent " +
+                                  std::to_string(*parent) + ", not a valid birth before its source state (" +
+                                  std::to_string(source) + " births) in lineage.csv");
+        }
+        return;
+    }
+    std::vector<Individual> population;
+    population.reserve(P);
+    std::uint64_t replayed = 0;
+    for (std::size_t i = 0; i < s.pending.size(); ++i) {
+        const Individual& child = s.pending[i];
+        const std::uint64_t source = schedule.source(child.id);
+        for (; replayed < source && replayed < rows.size(); ++replayed) {
+            Individual member;
+            member.id = replayed;
+            member.fitness = rows[replayed].valid ? rows[replayed].fitness : invalid_fitness;
+            member.params.assign(replay.dimension, 0.0);
+            insert_child(population, std::move(member), P);
+        }
+        const Individual expected =
+            conceive(population, replay.params, replay.blocks, replay.dimension, replay.seed, child.id);
+        if (expected.parent1 != child.parent1 || expected.parent2 != child.parent2) {
+            const auto text = [](const std::optional<std::uint64_t>& p) { return p ? std::to_string(*p) : "null"; };
+            contradiction(at("pending", i) + " (birth " + std::to_string(child.id) + ") has parents " +
+                          text(child.parent1) + ", " + text(child.parent2) + "; the population lineage.csv records at " +
+                          "its source state gives " + text(expected.parent1) + ", " + text(expected.parent2));
+        }
+    }
+}
 }  // namespace
+
+BirthReplay birth_replay(const ExperimentConfig& config) {
+    const std::vector<int> layers = config.network.layers();
+    return {config.evolution, config.run.seed, neuron_blocks(layers), parameter_count(layers)};
+}
 
 // The pending births are exactly those the run's schedule keeps (births
 // conceived from an earlier state), unevaluated, with parents that existed in
@@ -289,7 +342,7 @@ void check_checkpoint_content(const RunState& s, const ExperimentConfig& config)
 }
 
 void check_checkpoint_against_lineage(const RunState& s, std::string_view lineage, std::uint64_t P,
-                                      std::string_view header) {
+                                      std::string_view header, const BirthReplay* pending_parents) {
     const SearchView v = view_of(s);
     const std::optional<Individual>& best = *v.best;
     const std::vector<LineageRow> rows = parse_lineage(lineage, v.births, v.name, header);
@@ -313,6 +366,7 @@ void check_checkpoint_against_lineage(const RunState& s, std::string_view lineag
                           std::to_string(g));
     }
     if (!s.elites) check_history_by_replay(s, rows, P);
+    if (pending_parents != nullptr) check_pending_parents(s, rows, *pending_parents, birth_schedule(pending_parents->params));
     const std::uint64_t current = s.history.size() * P;
     if (v.invalid_in_generation != invalid_between(rows, current, v.births))
         contradiction(v.name + ".invalid_in_generation is " + std::to_string(v.invalid_in_generation) +

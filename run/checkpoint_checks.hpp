@@ -9,6 +9,7 @@
 #include "run/run_state.hpp"
 
 #include <string_view>
+#include <vector>
 
 namespace morphogen {
 
@@ -26,7 +27,21 @@ void check_checkpoint_content(const RunState& state, const ExperimentConfig& con
 // record them (id to fitness; the descriptors too where the state holds
 // them, as MAP-Elites elites do); the best the first of the highest fitness;
 // the invalid births of every generation (history) and of the current one.
+// With `pending_parents`, also the parents of every pending birth
+// (check_pending_parents).
+struct BirthReplay;
 void check_checkpoint_against_lineage(const RunState& state, std::string_view lineage, std::uint64_t population,
-                                      std::string_view header = lineage_header);
+                                      std::string_view header = lineage_header,
+                                      const BirthReplay* pending_parents = nullptr);
+
+// What re-drawing a birth's parents needs (docs/algorithm.md §8.2): the GA's
+// parameters, the run's seed and the genome's blocks and length.
+struct BirthReplay {
+    GaParams params;
+    std::uint64_t seed = 0;
+    std::vector<Block> blocks;
+    std::size_t dimension = 0;
+};
+BirthReplay birth_replay(const ExperimentConfig& config);
 
 }  // namespace morphogen

@@ -104,6 +104,10 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
     std::string kept_files;
     // Declared last, so it finishes its writes before anything it uses goes.
     IoThread io;
+    // The last checkpoint posted. A generation's end waits for it before it
+    // writes or reports anything, so what a kill -9 finds on disk is at most
+    // one finished generation past the last due checkpoint (§11.1).
+    std::uint64_t checkpoint_ticket = 0;
 
     // spdlog reports a failed log write to the handler, not to us: check it.
     auto check_log = [&] {
@@ -126,7 +130,7 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
         s.state.lineage_hash = s.lineage.hash_hex();
         s.state.elapsed_s = elapsed_before + seconds_since(session_start);
         std::string archive = config.algorithm == Algorithm::map_elites ? ga.archive_text() : std::string();
-        io.post([&s, bytes = checkpoint_bytes(s.state), archive = std::move(archive)] {
+        checkpoint_ticket = io.post([&s, bytes = checkpoint_bytes(s.state), archive = std::move(archive)] {
             s.history.sync();
             s.lineage.sync();
             // archive.csv first: a checkpoint never refers to an older archive.csv.
@@ -152,6 +156,7 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
         const std::uint64_t births = ga.births();
         progress.update(births, births / P, best_fitness());
         if (!what.ends_generation) return;
+        io.wait_for(checkpoint_ticket);
         write_rows();
 
         const std::uint64_t generation = births / P - 1;
@@ -212,7 +217,7 @@ int run_loop(RunSession& s, GrowthProblem& problem, Driver& ga) {
 int run_session(RunSession& s, GrowthProblem& problem) {
     try {
         if (s.config.algorithm == Algorithm::map_elites) {
-            EliteDriver driver(s.config, problem, s.state, resolve_threads(s.config.run.threads));
+            EliteDriver driver(s.config, problem, s.state);
             return run_loop(s, problem, driver);
         }
         GaDriver driver(s.config, problem, s.state);

@@ -113,6 +113,9 @@ std::string run_name_from_path(const std::string& path) {
 
 ExperimentConfig read_experiment_config(const json& original, const std::string& source,
                                         const ConfigOverrides& overrides) {
+    // The file must be valid as it is, keys the overrides replace included,
+    // so that `validate` and `evolve --generations N` agree about it.
+    if (overrides.seed || overrides.generations || overrides.threads) read_experiment_config(original, source);
     const json document = with_overrides(original, overrides);
     ConfigIssues issues;
     ObjectReader top(&document, "", issues);

@@ -22,13 +22,20 @@ void IoThread::rethrow_failure() {
     }
 }
 
-void IoThread::post(std::function<void()> task) {
+std::uint64_t IoThread::post(std::function<void()> task) {
     std::unique_lock lock(mutex_);
     changed_.wait(lock, [this] { return failure_ || tasks_.size() < max_queued_; });
     rethrow_failure();
-    if (failure_) return;  // reported before: nothing runs after a failure
+    if (failure_) return posted_;  // reported before: nothing runs after a failure
     tasks_.push_back(std::move(task));
     changed_.notify_all();
+    return ++posted_;
+}
+
+void IoThread::wait_for(std::uint64_t ticket) {
+    std::unique_lock lock(mutex_);
+    changed_.wait(lock, [this, ticket] { return failure_ || done_ >= ticket; });
+    rethrow_failure();
 }
 
 void IoThread::drain() {
@@ -43,6 +50,7 @@ void IoThread::serve() {
         changed_.wait(lock, [this] { return stopping_ || !tasks_.empty(); });
         if (tasks_.empty() || failure_) {
             if (stopping_) return;
+            done_ += tasks_.size();
             tasks_.clear();
             continue;
         }
@@ -58,6 +66,7 @@ void IoThread::serve() {
         }
         lock.lock();
         running_task_ = false;
+        ++done_;
         if (failed && !failure_) failure_ = failed;
         changed_.notify_all();
     }

@@ -8,6 +8,7 @@
 // rethrown to the run loop at its next post() or drain().
 #include <condition_variable>
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <exception>
 #include <functional>
@@ -26,7 +27,10 @@ public:
     IoThread(const IoThread&) = delete;
     IoThread& operator=(const IoThread&) = delete;
 
-    void post(std::function<void()> task);
+    // Queues `task` and returns its ticket: tickets count posts from 1.
+    std::uint64_t post(std::function<void()> task);
+    // Returns when every task up to `ticket` has run (0: at once).
+    void wait_for(std::uint64_t ticket);
     // Returns when every posted task has run.
     void drain();
 
@@ -38,6 +42,8 @@ private:
     std::mutex mutex_;
     std::condition_variable changed_;
     std::deque<std::function<void()>> tasks_;
+    std::uint64_t posted_ = 0;  // tickets handed out
+    std::uint64_t done_ = 0;    // tickets run (or skipped after a failure)
     bool running_task_ = false;
     bool stopping_ = false;
     std::exception_ptr failure_;

@@ -67,15 +67,30 @@ void Progress::update(std::uint64_t births, std::uint64_t generation, const std:
 }
 
 void Progress::generation(const HistoryRow& row) {
-    char text[256];
+    // The time left at this session's average rate so far (a resumed run's
+    // earlier sessions ran on other terms: threads, machine).
+    double remaining = -1.0;
+    if (started_) {
+        const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+        const double done = static_cast<double>(row.births - start_births_);
+        if (seconds > 0 && done > 0) remaining = static_cast<double>(target_births_ - row.births) * seconds / done;
+    }
+    std::string quality;
+    if (row.qd) {
+        char qd[96];
+        std::snprintf(qd, sizeof qd, "coverage %.4g, QD-score %s, ", row.coverage,
+                      score_text(row.qd_score).c_str());
+        quality = qd;
+    }
+    char text[384];
     std::snprintf(text, sizeof text,
                   "generation %llu/%llu: best %s mean %s median %s worst %s, mean vertices %s, invalid %llu, "
-                  "%.1f births/s, elapsed %s",
+                  "%s%.1f births/s, elapsed %s, remaining %s",
                   static_cast<unsigned long long>(row.generation), static_cast<unsigned long long>(target_generation_),
                   score_text(row.best).c_str(), score_text(row.mean).c_str(), score_text(row.median).c_str(),
                   score_text(row.worst).c_str(), score_text(row.mean_vertices).c_str(),
-                  static_cast<unsigned long long>(row.invalid), row.births_per_s,
-                  duration_text(row.elapsed_s).c_str());
+                  static_cast<unsigned long long>(row.invalid), quality.c_str(), row.births_per_s,
+                  duration_text(row.elapsed_s).c_str(), duration_text(remaining).c_str());
     if (tty_) {
         file_log_->info(text);
     } else {

@@ -2,7 +2,8 @@
 // What a running `evolve`/`resume` shows. On a terminal (stderr is a tty):
 // one line rewritten in place (at most 10 times a second) (generation, best, births/s,
 // ETA). Otherwise (a pipe, a log collector): one plain log line per
-// generation. log.txt always gets the per-generation line.
+// generation, with the time remaining at this session's rate (and coverage
+// and QD-score for MAP-Elites). log.txt always gets the per-generation line.
 #include "run/run_records.hpp"
 
 #include <spdlog/logger.h>

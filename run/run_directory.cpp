@@ -103,6 +103,23 @@ bool holds_no_lineage_rows(const fs::path& path) {
     }
 }
 
+// Whether archive.csv is missing or holds no elite: the empty archive that
+// a MAP-Elites evolve writes just before its first checkpoint is one line,
+// "cell,<descriptor names>,fitness,id" (written atomically, so whole).
+bool holds_no_archive_rows(const fs::path& path) {
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(path, ec))) return true;
+    if (!fs::is_regular_file(fs::symlink_status(path, ec))) return false;
+    try {
+        const std::string bytes = read_file_bytes(path);
+        const std::string_view tail(archive_header_tail);
+        return bytes.rfind("cell,", 0) == 0 && bytes.find('\n') == bytes.size() - 1 && bytes.size() >= tail.size() &&
+               bytes.compare(bytes.size() - tail.size(), tail.size(), tail) == 0;
+    } catch (const IoError&) {
+        return false;
+    }
+}
+
 bool ends_with(const std::string& text, std::string_view tail) {
     return text.size() >= tail.size() && text.compare(text.size() - tail.size(), tail.size(), tail) == 0;
 }
@@ -113,7 +130,8 @@ bool is_stopped_start(const RunPaths& paths) {
     std::error_code ec;
     if (!fs::is_directory(paths.dir, ec) || fs::exists(fs::symlink_status(paths.checkpoint, ec))) return false;
     if (fs::is_empty(paths.dir, ec)) return false;
-    const std::vector<fs::path> ours{paths.config, paths.history, paths.lineage, paths.log, paths.dir / ".lock"};
+    const std::vector<fs::path> ours{paths.config, paths.history, paths.lineage, paths.log, paths.archive,
+                                     paths.dir / ".lock"};
     for (const auto& entry : fs::directory_iterator(paths.dir, ec)) {
         const fs::path& p = entry.path();
         if (p == paths.best) {
@@ -127,7 +145,7 @@ bool is_stopped_start(const RunPaths& paths) {
     }
     if (ec) return false;
     return (holds_no_rows(paths.history, history_header) || holds_no_rows(paths.history, history_header_qd)) &&
-           holds_no_lineage_rows(paths.lineage);
+           holds_no_lineage_rows(paths.lineage) && holds_no_archive_rows(paths.archive);
 }
 
 void create_run_dir(const RunPaths& paths, bool force) {

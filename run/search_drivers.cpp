@@ -1,10 +1,14 @@
 #include "run/search_drivers.hpp"
 
 #include "evolution/archive_stats.hpp"
+#include "evolution/cma_emitter.hpp"
 #include "evolution/cvt.hpp"
 #include "evolution/operators.hpp"
 #include "evolution/population_stats.hpp"
 #include "run/archive_csv.hpp"
+#include "run/stop_signals.hpp"
+
+#include <stdexcept>
 
 namespace morphogen {
 
@@ -35,16 +39,43 @@ const Individual* GaDriver::exported() const {
     return best != nullptr && best->valid() ? best : nullptr;
 }
 
-MapElitesState initial_elites_state(const ExperimentConfig& c, int threads) {
-    if (c.qd.archive == ArchiveKind::grid) return MapElitesState{0, Archive::grid(c.qd.descriptors), {}, 0, 0};
-    return MapElitesState{
-        0, Archive::cvt(c.qd.descriptors, cvt_centroids(c.run.seed, c.qd.cvt_cells, c.qd.descriptors.size(), threads)),
-        {}, 0, 0};
+std::optional<MapElitesState> initial_elites_state(const ExperimentConfig& c, int threads, spdlog::logger* progress) {
+    std::optional<Archive> archive;
+    if (c.qd.archive == ArchiveKind::grid) {
+        archive.emplace(Archive::grid(c.qd.descriptors));
+    } else {
+        CvtWatch watch;
+        watch.stop = [] { return StopSignals::requested(); };
+        if (progress != nullptr) {
+            progress->info("placing {} CVT centroids over {} descriptors (at most {} rounds)", c.qd.cvt_cells,
+                           c.qd.descriptors.size(), kCvtLloydIterations);
+            watch.round_done = [progress](int round) { progress->info("CVT centroids: round {} done", round); };
+        }
+        std::vector<double> centroids = cvt_centroids(c.run.seed, c.qd.cvt_cells, c.qd.descriptors.size(), threads, watch);
+        if (centroids.empty()) return std::nullopt;
+        archive.emplace(Archive::cvt(c.qd.descriptors, std::move(centroids)));
+    }
+    MapElitesState state{0, std::move(*archive), {}, 0, 0};
+    // One not-yet-started state per emitter when any is a CMA emitter, as
+    // MapElites makes them: the checkpoint written before the first birth
+    // must hold what resume asks of every later one.
+    for (const EmitterSpec& e : c.qd.emitters)
+        if (is_cma(e.kind)) {
+            state.emitters.resize(c.qd.emitters.size());
+            break;
+        }
+    return state;
 }
 
-EliteDriver::EliteDriver(const ExperimentConfig& c, Problem& problem, RunState& state, int threads)
-    : SearchDriver(map_elites_params(c.evolution, c.qd), c.run.seed, problem,
-                   state.elites ? std::move(*state.elites) : initial_elites_state(c, threads)),
+namespace {
+MapElitesState take_elites(RunState& state) {
+    if (!state.elites) throw std::logic_error("EliteDriver: the run state holds no MAP-Elites state");
+    return std::move(*state.elites);
+}
+}  // namespace
+
+EliteDriver::EliteDriver(const ExperimentConfig& c, Problem& problem, RunState& state)
+    : SearchDriver(map_elites_params(c.evolution, c.qd), c.run.seed, problem, take_elites(state)),
       qd_offset_(c.qd.qd_offset) {}
 
 void EliteDriver::fill(HistoryRow& row, const Inserted& step) const {

@@ -10,6 +10,8 @@
 #include "run/run_records.hpp"
 #include "run/run_state.hpp"
 
+#include <spdlog/logger.h>
+
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -47,7 +49,8 @@ public:
 // MAP-Elites; its history rows summarise the archive.
 class EliteDriver : public SearchDriver<MapElites> {
 public:
-    EliteDriver(const ExperimentConfig& config, Problem& problem, RunState& state, int threads);
+    // state.elites must hold the search's state (initial_elites_state for a new run).
+    EliteDriver(const ExperimentConfig& config, Problem& problem, RunState& state);
     void fill(HistoryRow& row, const Inserted& generation_end) const;
     // The fittest elite (ties: the lower cell).
     const Individual* exported() const;
@@ -59,8 +62,10 @@ private:
 };
 
 // A new MAP-Elites run's empty archive, for the first checkpoint: a CVT's
-// centroids are computed from run.seed here, once; later sessions read them
-// from the checkpoint.
-MapElitesState initial_elites_state(const ExperimentConfig& config, int threads);
+// centroids are computed from run.seed here, once (their rounds reported to
+// `progress` if given); later sessions read them from the checkpoint.
+// nullopt if a stop signal (stop_signals.hpp) came while they were placed.
+std::optional<MapElitesState> initial_elites_state(const ExperimentConfig& config, int threads,
+                                                   spdlog::logger* progress = nullptr);
 
 }  // namespace morphogen

@@ -3,6 +3,7 @@
 #include <pthread.h>
 
 #include <csignal>
+#include <initializer_list>
 
 namespace morphogen {
 
@@ -21,15 +22,21 @@ StopSignals::StopSignals() {
     action.sa_handler = on_stop_signal;
     action.sa_flags = SA_RESTART;  // file I/O in progress simply continues
     sigemptyset(&action.sa_mask);
-    sigaction(SIGINT, &action, nullptr);
-    sigaction(SIGTERM, &action, nullptr);
+    sigset_t stops;
+    sigemptyset(&stops);
+    for (int number : {SIGINT, SIGTERM}) {
+        // A signal started ignored (`nohup`, a shell's background job for
+        // SIGINT) stays ignored, as in shells and most tools: it was meant
+        // for someone else.
+        struct sigaction before {};
+        sigaction(number, nullptr, &before);
+        if (before.sa_handler == SIG_IGN) continue;
+        sigaction(number, &action, nullptr);
+        sigaddset(&stops, number);
+    }
     // A launcher may block these across exec to close the moment before any
     // of our code runs (a signal then waits, pending); from here on they are
     // stop requests, so let them in (a pending one arrives right now).
-    sigset_t stops;
-    sigemptyset(&stops);
-    sigaddset(&stops, SIGINT);
-    sigaddset(&stops, SIGTERM);
     pthread_sigmask(SIG_UNBLOCK, &stops, nullptr);
 }
 

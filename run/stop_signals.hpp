@@ -13,7 +13,8 @@ namespace morphogen {
 
 class StopSignals {
 public:
-    // Installs the handlers, clears the flag, unblocks SIGINT/SIGTERM. The
+    // Installs the handlers, clears the flag, unblocks SIGINT/SIGTERM; a
+    // signal the process started with ignored is left ignored. The
     // handlers stay until the process exits (the destructor leaves them): a
     // signal that comes after the work is done, while the process tears down,
     // changes nothing and must not turn a finished run into a killed one.

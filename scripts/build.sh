@@ -1,10 +1,15 @@
 #!/usr/bin/env bash
-# Configures and builds morphogen. Usage: scripts/build.sh [release|sanitize]
+# Configures and builds morphogen. Usage: scripts/build.sh [release|sanitize] [TARGET...]
 #   release  (default) optimised build in build/
 #   sanitize ASan + UBSan build in build-sanitize/
+#   TARGET   only these CMake targets (default: everything, tests included),
+#            e.g. scripts/build.sh release morphogen
 set -euo pipefail
 cd "$(dirname "$0")/.."
 kind=${1:-release}
+shift || true
+targets=()
+for t in "$@"; do targets+=(--target "$t"); done
 case "$kind" in
   release)  dir=build;          flags=(-DCMAKE_BUILD_TYPE=Release) ;;
   sanitize) dir=build-sanitize; flags=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DMORPHOGEN_SANITIZE=ON) ;;
@@ -13,4 +18,4 @@ esac
 generator=()
 command -v ninja >/dev/null && generator=(-G Ninja)
 cmake -S . -B "$dir" "${generator[@]}" "${flags[@]}" >/dev/null
-cmake --build "$dir" --parallel "$(nproc)"
+cmake --build "$dir" --parallel "$(nproc)" "${targets[@]}"

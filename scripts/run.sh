@@ -5,5 +5,5 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
-scripts/build.sh release
+scripts/build.sh release morphogen  # the executable alone; scripts/test.sh builds the tests
 exec build/morphogen evolve configs/canopy.json "$@"

@@ -233,6 +233,48 @@ TEST_CASE("a pipeline checkpoint keeps its births in flight; damaged ones are re
     check_same_results(tmp.path / "whole", run);
 }
 
+TEST_CASE("forged parents of pending births are refused: re-drawn from the population lineage.csv replays",
+          "[app][checkpoint][pipeline]") {
+    TempDir tmp("checkpoint-pending-parents");
+    auto config = nlohmann::json::parse(tiny_pipeline_config(3, 8, 5));
+    config["evolution"]["crossover"] = 0.7;  // most children have two parents
+    write_text(tmp.path / "pipe.json", config.dump());
+    const auto run = tmp.path / "run";
+    REQUIRE(run_morphogen("evolve " + q(tmp.path / "pipe.json") + " --out " + q(run) + " --generations 2").code == 0);
+    const std::string good = read_text(run / "checkpoint.json");
+    const nlohmann::json content = checkpoint_content(good, "good");
+    const nlohmann::json& pending = content["pending"];
+    REQUIRE(pending.size() == 4);
+    std::optional<std::size_t> crossed;
+    for (std::size_t i = 0; i < pending.size(); ++i)
+        if (!crossed && !pending[i]["parent2"].is_null() && pending[i]["parent1"] != pending[i]["parent2"]) crossed = i;
+    REQUIRE(crossed);
+    std::optional<std::size_t> other;  // a birth whose parents differ from pending[crossed]'s
+    for (std::size_t i = 0; i < pending.size(); ++i)
+        if (i != *crossed && (pending[i]["parent1"] != pending[*crossed]["parent1"] ||
+                              pending[i]["parent2"] != pending[*crossed]["parent2"]))
+            other = i;
+    REQUIRE(other);
+    const std::size_t k = *crossed, m = *other;
+    const std::uint64_t gone = pending[0]["parent1"] == 0 ? 1 : 0;
+    check_edits_refused(run, content, {
+        {[](nlohmann::json& c) {
+             c["pending"][0]["parent1"] = nullptr;
+             c["pending"][0]["parent2"] = nullptr;
+         }, "has parents null, null"},
+        {[gone](nlohmann::json& c) { c["pending"][0]["parent1"] = gone; }, "has parents " + std::to_string(gone)},
+        {[k](nlohmann::json& c) { std::swap(c["pending"][k]["parent1"], c["pending"][k]["parent2"]); }, "has parents"},
+        {[k, m](nlohmann::json& c) {
+             std::swap(c["pending"][k]["parent1"], c["pending"][m]["parent1"]);
+             std::swap(c["pending"][k]["parent2"], c["pending"][m]["parent2"]);
+         }, "the population lineage.csv records"},
+    });
+    write_text(run / "checkpoint.json", good);
+    REQUIRE(run_morphogen("resume " + q(run) + " --generations 3").code == 0);
+    REQUIRE(run_morphogen("evolve " + q(tmp.path / "pipe.json") + " --out " + q(tmp.path / "whole")).code == 0);
+    check_same_results(tmp.path / "whole", run);
+}
+
 TEST_CASE("invalid births and the best are checked against lineage.csv", "[app][checkpoint]") {
     // Two generations of two: births 1 and 3 invalid, birth 2 the best.
     auto born = [](std::uint64_t id, std::optional<std::uint64_t> parent, double fitness) {

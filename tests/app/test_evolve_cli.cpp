@@ -6,6 +6,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
+
 #include <algorithm>
 #include <csignal>
 #include <fstream>
@@ -245,4 +247,111 @@ TEST_CASE("the branching mode with collisions prevented and the tree fitness: th
     REQUIRE(t.evolve(parts, "--threads 1 --generations 2").code == 0);
     REQUIRE(run_morphogen("resume " + q(parts) + " --threads 2 --generations 4").code == 0);
     check_same_results(t.tmp.path / "t1", parts);
+}
+
+TEST_CASE("validate and evolve agree about a key an option replaces", "[app][evolve][config]") {
+    TempDir tmp("evolve-override");
+    auto config = nlohmann::json::parse(tiny_config(2));
+    config["run"]["generations"] = "x";
+    config["run"]["threads"] = -3;
+    write_text(tmp.path / "bad.json", config.dump());
+    const CliResult validated = run_morphogen("validate " + q(tmp.path / "bad.json"));
+    CHECK(validated.code == 2);
+    for (const char* options : {"--generations 1", "--threads 1", "--generations 1 --threads 1 --seed 2"}) {
+        CAPTURE(options);
+        const CliResult r =
+            run_morphogen("evolve " + q(tmp.path / "bad.json") + " --out " + q(tmp.path / "r") + " " + options);
+        CHECK(r.code == 2);
+        CHECK_THAT(r.output, Catch::Contains("run.generations") && Catch::Contains("run.threads"));
+        CHECK_FALSE(fs::exists(tmp.path / "r"));
+    }
+}
+
+TEST_CASE("command-line numbers: a sign in an unsigned option and a non-finite number are refused, naming them",
+          "[app][cli]") {
+    TempDir tmp("cli-numbers");
+    write_text(tmp.path / "c.json", tiny_config(1));
+    const std::string config = q(tmp.path / "c.json");
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"evolve " + config + " --seed -1", "--seed"},
+        {"evolve " + config + " --generations -1", "--generations"},
+        {"evolve " + config + " --max-eval-time nan", "--max-eval-time"},
+        {"evolve " + config + " --max-eval-time inf", "--max-eval-time"},
+        {"grow --random -5 -o " + q(tmp.path / "g.obj"), "--random"},
+        {"gallery --count 2 --seed -2 --out " + q(tmp.path / "gal"), "--seed"},
+        {"bench --seed -1 --genomes 1", "--seed"},
+        {"grow --random 1 -o " + q(tmp.path / "a.glb") + " --animate " + q(tmp.path / "b.glb") +
+             " --frame-seconds nan", "--frame-seconds"},
+    };
+    for (const auto& [args, option] : cases) {
+        CAPTURE(args);
+        const CliResult r = run_morphogen(args);
+        CHECK(r.code == 2);
+        CHECK_THAT(r.output, Catch::Contains(option));
+        CHECK_THAT(r.output, !Catch::Contains("config error"));
+    }
+    CHECK_FALSE(fs::exists(tmp.path / "gal"));
+    CHECK_FALSE(fs::exists(tmp.path / "g.obj"));
+}
+
+namespace {
+// Runs a POSIX shell script (morphogen is $M in it); returns its exit status, output in `out`.
+int run_script(const fs::path& dir, const std::string& body, std::string& out) {
+    write_text(dir / "script.sh", "M=" + q(MORPHOGEN_EXE) + "\n" + body + "\n");
+    const int status = std::system(("sh " + q(dir / "script.sh") + " > " + q(dir / "out.txt") + " 2>&1").c_str());
+    out = read_text(dir / "out.txt");
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+}  // namespace
+
+TEST_CASE("a file-size limit ends a run with exit 3 and the reason, nothing partial, then resumable",
+          "[app][faults][resume]") {
+    TempDir tmp("evolve-fsize");
+    auto config = nlohmann::json::parse(tiny_config(4));
+    config["run"]["export_every"] = 1;
+    write_text(tmp.path / "c.json", config.dump());
+    const std::string path = q(tmp.path / "c.json");
+    REQUIRE(run_morphogen("evolve " + path + " --out " + q(tmp.path / "whole")).code == 0);
+    int limited = 0;
+    for (int blocks : {1, 4, 16, 64}) {  // ulimit -f counts 1 KiB blocks in dash and bash
+        CAPTURE(blocks);
+        const fs::path dir = tmp.path / ("f" + std::to_string(blocks));
+        std::string output;
+        const int code = run_script(tmp.path, "ulimit -f " + std::to_string(blocks) + "\nexec \"$M\" evolve " + path +
+                                                  " --out " + q(dir), output);
+        INFO(output);
+        CHECK((code == 0 || code == 3));
+        if (code == 3) {
+            ++limited;
+            CHECK_THAT(output, Catch::Contains("File too large"));
+        }
+        bool temporary = false;
+        for (const auto& entry : fs::recursive_directory_iterator(dir))
+            temporary = temporary || entry.path().extension() == ".tmp";
+        CHECK_FALSE(temporary);
+        const CliResult finished = fs::exists(dir / "checkpoint.json")
+                                       ? run_morphogen("resume " + q(dir))
+                                       : run_morphogen("evolve " + path + " --out " + q(dir));
+        INFO(finished.output);
+        REQUIRE(finished.code == 0);
+        check_same_results(tmp.path / "whole", dir);
+    }
+    CHECK(limited >= 2);
+}
+
+TEST_CASE("a SIGINT the run was started with ignored stays ignored (nohup, background jobs)", "[app][signals]") {
+    TempDir tmp("evolve-sigint-ignored");
+    write_text(tmp.path / "c.json", tiny_config(60));
+    // trap '' INT: what the shell starts has SIGINT ignored. SIGINT every
+    // 10 ms for half a second (a zombie takes them too) must change nothing.
+    std::string output;
+    const int code = run_script(tmp.path, "trap '' INT\n\"$M\" evolve " + q(tmp.path / "c.json") + " --out " +
+                                              q(tmp.path / "r") + " &\npid=$!\n"
+                                              "for i in $(seq 1 50); do kill -INT $pid 2>/dev/null || break; sleep 0.01; done\n"
+                                              "wait $pid",
+                                output);
+    INFO(output);
+    CHECK(code == 0);
+    REQUIRE(run_morphogen("evolve " + q(tmp.path / "c.json") + " --out " + q(tmp.path / "whole")).code == 0);
+    check_same_results(tmp.path / "whole", tmp.path / "r");
 }

@@ -301,6 +301,64 @@ TEST_CASE("a MAP-Elites run stopped by Ctrl-C or kill -9 resumes to the same byt
     }
 }
 
+TEST_CASE("a MAP-Elites run with CMA emitters killed during generation 0 resumes from its first checkpoint",
+          "[app][map_elites][emitters][signals]") {
+    TempDir tmp("me-first-checkpoint");
+    nlohmann::json config = nlohmann::json::parse(me_config(1));
+    config["growth"]["steps"] = 150;  // a generation 0 of seconds: the kill lands inside it
+    config["growth"]["max_vertices"] = 3000;
+    config["emitters"] = nlohmann::json::parse(R"([{"kind": "cma_mae", "share": 1, "sigma0": 0.3,
+        "learning_rate": 0.2, "threshold_min": -1}, {"kind": "cma_me", "share": 1, "sigma0": 0.2}])");
+    const fs::path path = tmp.path / "cma.json";
+    write_text(path, config.dump());
+    const fs::path dir = tmp.path / "killed";
+    const int pid = spawn_morphogen({"evolve", path.string(), "--out", dir.string(), "--threads", "1"}, tmp.path / "spawn.log");
+    for (int i = 0; i < 20000 && !fs::exists(dir / "checkpoint.json"); ++i)
+        std::this_thread::sleep_for(std::chrono::microseconds(500));
+    ::kill(pid, SIGKILL);
+    CHECK(wait_for(pid) == 128 + SIGKILL);
+    const nlohmann::json first = checkpoint_content(read_text(dir / "checkpoint.json"), "t");
+    REQUIRE(first["map_elites"]["births"] == 0);
+    CHECK(first["map_elites"]["emitters"] == nlohmann::json::parse("[null, null]"));
+    const CliResult resumed = run_morphogen("resume " + dir.string() + " --threads 1");
+    INFO(resumed.output);
+    REQUIRE(resumed.code == 0);
+    REQUIRE(run_morphogen("evolve " + path.string() + " --out " + (tmp.path / "whole").string() + " --threads 1").code == 0);
+    check_same_results(tmp.path / "whole", dir);
+    CHECK(read_text(tmp.path / "whole" / "archive.csv") == read_text(dir / "archive.csv"));
+}
+
+TEST_CASE("a MAP-Elites run stopped before its first checkpoint is a stopped start", "[app][map_elites][faults]") {
+    TempDir tmp("me-stopped-start");
+    write_text(tmp.path / "me.json", me_config(2));
+    const std::string config = (tmp.path / "me.json").string();
+    REQUIRE(run_morphogen("evolve " + config + " --out " + (tmp.path / "whole").string()).code == 0);
+    // What a kill -9 between the empty archive.csv and the first checkpoint leaves.
+    const fs::path dir = tmp.path / "start";
+    fs::create_directories(dir / "best");
+    fs::copy_file(tmp.path / "whole" / "config.json", dir / "config.json");
+    const std::string history = read_text(tmp.path / "whole" / "history.csv");
+    const std::string lineage = read_text(tmp.path / "whole" / "lineage.csv");
+    const std::string archive = read_text(tmp.path / "whole" / "archive.csv");
+    write_text(dir / "history.csv", history.substr(0, history.find('\n') + 1));
+    write_text(dir / "lineage.csv", lineage.substr(0, lineage.find('\n') + 1));
+    write_text(dir / "archive.csv", archive.substr(0, archive.find('\n') + 1));
+    write_text(dir / "log.txt", "");
+
+    const CliResult refused = run_morphogen("resume " + dir.string());
+    CHECK(refused.code == 5);
+    CHECK_THAT(refused.output, Catch::Contains("before its first checkpoint"));
+    // An archive.csv holding an elite is a run's work: never taken for a stopped start.
+    write_text(dir / "archive.csv", archive.substr(0, archive.find('\n', archive.find('\n') + 1) + 1));
+    CHECK(run_morphogen("evolve " + config + " --out " + dir.string()).code == 3);
+    write_text(dir / "archive.csv", archive.substr(0, archive.find('\n') + 1));
+    const CliResult restarted = run_morphogen("evolve " + config + " --out " + dir.string());
+    INFO(restarted.output);
+    REQUIRE(restarted.code == 0);
+    check_same_results(tmp.path / "whole", dir);
+    CHECK(read_text(tmp.path / "whole" / "archive.csv") == read_text(dir / "archive.csv"));
+}
+
 TEST_CASE("morphogen archive exports elites that regrow to their stored fitness and cell", "[app][map_elites][archive]") {
     TempDir tmp("me-export");
     write_text(tmp.path / "me.json", me_config(3));
@@ -494,4 +552,35 @@ TEST_CASE("MAP-Elites with full-covariance CMA emitters: the same files for any 
 
     REQUIRE(run_morphogen("resume " + split.string() + " --generations 5 --threads 1").code == 0);
     check_same_elite_runs(tmp.path / "one", split);
+}
+
+TEST_CASE("placing a large CVT archive shows its rounds and stops on SIGTERM within a second",
+          "[app][map_elites][signals]") {
+    TempDir tmp("me-cvt-stop");
+    nlohmann::json config = nlohmann::json::parse(me_config(1));
+    config["archive"] = nlohmann::json::parse(R"({"type": "cvt", "cells": 10000})");
+    nlohmann::json descriptors = nlohmann::json::array();
+    for (const char* measure : {"height", "footprint", "spread", "slenderness", "lean", "sphericity", "volume", "area"})
+        descriptors.push_back({{"measure", measure}, {"min", 0}, {"max", 10}});
+    config["descriptors"] = descriptors;
+    write_text(tmp.path / "cvt.json", config.dump());
+    const CliResult valid = run_morphogen("validate " + (tmp.path / "cvt.json").string());
+    INFO(valid.output);
+    REQUIRE(valid.code == 0);
+    const fs::path dir = tmp.path / "run";
+    const int pid = spawn_morphogen({"evolve", (tmp.path / "cvt.json").string(), "--out", dir.string(), "--threads", "2"},
+                                    tmp.path / "spawn.log");
+    for (int i = 0; i < 2000 && read_text(dir / "log.txt").find("placing 10000 CVT centroids") == std::string::npos; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    const auto sent = std::chrono::steady_clock::now();
+    ::kill(pid, SIGTERM);
+    CHECK(wait_for(pid) == 130);
+    CHECK(std::chrono::steady_clock::now() - sent < std::chrono::seconds(5));
+    const std::string log = read_text(dir / "log.txt");
+    CHECK_THAT(log, Catch::Contains("placing 10000 CVT centroids") && Catch::Contains("nothing was lost"));
+    CHECK_FALSE(fs::exists(dir / "checkpoint.json"));
+    const CliResult resumed = run_morphogen("resume " + dir.string());
+    CHECK(resumed.code == 5);
+    CHECK_THAT(resumed.output, Catch::Contains("before its first checkpoint"));
 }

@@ -222,6 +222,41 @@ TEST_CASE("a run stopped before its first checkpoint can be started again withou
     }
 }
 
+TEST_CASE("kill -9 finds at most one finished generation past the checkpoint", "[app][faults][signals]") {
+    // On a real disk (fsync costs there) with 2-generation-long checkpoints
+    // that used to queue behind each other: history.csv and lineage.csv may
+    // hold the generation being finished, never more.
+    TempDir tmp("faults-lag");
+    auto config = nlohmann::json::parse(fault_config());
+    config["run"]["generations"] = 30;
+    config["run"]["export_every"] = 0;
+    config["evolution"]["population"] = 4;
+    const fs::path config_path = tmp.path / "c.json";
+    write_text(config_path, config.dump());
+    std::mt19937 random(39);
+    for (int trial = 0; trial < 20; ++trial) {
+        const long delay = std::uniform_int_distribution<long>(20000, 120000)(random);
+        CAPTURE(trial, delay);
+        const auto dir = tmp.path / numbered("k", trial);
+        const int pid = spawn_morphogen({"evolve", config_path.string(), "--out", dir.string()}, tmp.path / "spawn.log");
+        sleep_us(delay);
+        ::kill(pid, SIGKILL);
+        wait_for(pid);
+        if (!fs::exists(dir / "checkpoint.json")) continue;
+        const nlohmann::json content = checkpoint_content(read_text(dir / "checkpoint.json"), "test");
+        const std::uint64_t done = content["ga"]["births"].get<std::uint64_t>() / 4;  // finished generations
+        const auto lines = [](const fs::path& file) {
+            std::uint64_t n = 0;
+            for (char c : read_text(file)) n += c == '\n';
+            return n - 1;  // the header
+        };
+        const std::uint64_t reported = lines(dir / "history.csv"), born = lines(dir / "lineage.csv");
+        CAPTURE(done, reported, born);
+        CHECK(reported <= done + 1);
+        CHECK(born <= (done + 1) * 4);
+    }
+}
+
 TEST_CASE("resume removes what a crash left after the checkpoint and recreates best/", "[app][faults]") {
     FaultRun t("faults-leftovers");
     const auto dir = t.tmp.path / "r";

@@ -208,6 +208,7 @@ TEST_CASE("stopped with one number of processes, resumed with another: the unint
     INFO(r.output);
     REQUIRE(r.code == 0);
     r = run_shell(mpirun(2) + "resume " + q(dir) + " --generations 4", tmp.path / "log");
+    INFO(r.output);
     REQUIRE(r.code == 0);
     // And a run directory written by several processes is an ordinary one.
     REQUIRE(run_morphogen("resume " + q(dir) + " --generations 6").code == 0);
