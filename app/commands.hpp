@@ -18,7 +18,6 @@ void add_grow_command(CLI::App& root, CommandRunner& selected);
 void add_gallery_command(CLI::App& root, CommandRunner& selected);
 void add_render_command(CLI::App& root, CommandRunner& selected);
 void add_bench_command(CLI::App& root, CommandRunner& selected);
-void add_bench_qd_command(CLI::App& root, CommandRunner& selected);
 void add_evolve_command(CLI::App& root, CommandRunner& selected);
 void add_resume_command(CLI::App& root, CommandRunner& selected);
 void add_validate_command(CLI::App& root, CommandRunner& selected);

@@ -55,8 +55,8 @@ bool finish_cma_iteration(const EmitterSpec& spec, CmaEmitterState& state) {
     parents.reserve(mu);
     for (std::size_t k = 0; k < mu; ++k) parents.push_back(&children[order[k]].params);
     const bool full = spec.covariance == CmaCovariance::full;
-    if (full && spec.pyribs_update)
-        full_cma_update_pyribs(state.full, parents, children.size());
+    if (full && spec.full_update)
+        spec.full_update(state.full, parents, children.size());
     else if (full)
         full_cma_update(state.full, parents);
     else

@@ -14,6 +14,7 @@
 //
 // Parent selection, per emitter: uniform over the occupied cells (as before
 // emitters) or fitness-proportional over the elites.
+#include "evolution/full_cma.hpp"
 #include "evolution/individual.hpp"
 #include "evolution/operators.hpp"
 #include "evolution/rng.hpp"
@@ -51,9 +52,10 @@ struct EmitterSpec {
     CmaParents parents = CmaParents::filter;
     CmaRestart restart = CmaRestart::no_improvement;
     CmaCovariance covariance = CmaCovariance::diagonal;  // cma_me, cma_mae
-    // With the full model: update as pyribs 0.4 does (full_cma_update_pyribs).
-    // Set by bench-qd alone, never read from a config or a checkpoint.
-    bool pyribs_update = false;
+    // With the full model: another update rule than full_cma_update (§9.9),
+    // set by code that links the library (bench/); empty: the textbook's.
+    // Never read from a config or a checkpoint.
+    FullCmaUpdate full_update = {};
 };
 
 // Births of one generation for each emitter: P x share / (sum of shares),

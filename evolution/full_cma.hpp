@@ -10,6 +10,7 @@
 #include "evolution/rng.hpp"
 
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -22,9 +23,6 @@ struct FullCmaState {
     std::vector<double> path_sigma;  // p_sigma
     double sigma = 1.0;              // > 0
     std::uint64_t updates = 0;       // updates since the (re)start
-    // full_cma_update_pyribs only: `updates` when basis and scales were
-    // last recomputed (never stored: that update is for bench-qd alone).
-    std::uint64_t decomposed_at = 0;
     // Derived from `covariance` by full_cma_decompose (never stored):
     // C = B diag(scales)^2 B^T, B's columns the eigenvectors.
     std::vector<double> basis;   // B, n x n row-major
@@ -43,19 +41,13 @@ std::vector<double> full_cma_sample(const FullCmaState& state, RandomStream& str
 // no parents or a wrong length.
 void full_cma_update(FullCmaState& state, std::span<const std::vector<double>* const> parents_best_first);
 
-// The update of pyribs 0.4's CMA-ES (ribs/emitters/opt/_cma_es.py, which
-// the CMA-MAE paper's benchmark code vendors), for bench-qd's reproduction of
-// the published figures only (docs/results.md). It differs from the textbook
-// update above in six ways: the rank-one term is weighted by c1^2 instead of
-// c1 (pyribs applies c1 twice); p_c accumulates m' - m without dividing by
-// sigma (so that term is also sigma^2 times the textbook's); steps are not
-// clipped; sigma *= exp(min(1, cs/ds (|p_s|^2/n - 1)/2)); h_sigma tests
-// |p_s|^2/n/(1 - (1-cs)^(2u)) < 2 + 4/(n+1); and basis and scales (used to
-// sample and to whiten) are recomputed only once lambda (u - decomposed_at)
-// > n lambda / (2 n^2 (c1 + cmu)) children have passed since the last time
-// (every 3 updates at n = 100, lambda = 36), not after every update.
-void full_cma_update_pyribs(FullCmaState& state, std::span<const std::vector<double>* const> parents_best_first,
-                            std::size_t lambda);
+// A replacement for full_cma_update, for code that links the library to
+// compare other update rules (bench/pyribs_cma.hpp reproduces pyribs 0.4's):
+// called with the state, the selected children best first, and lambda, the
+// emitter's children per iteration. It must leave basis and scales usable
+// for sampling (full_cma_decompose).
+using FullCmaUpdate =
+    std::function<void(FullCmaState&, std::span<const std::vector<double>* const> parents_best_first, std::size_t lambda)>;
 
 // Recomputes basis and scales from covariance. False, leaving them empty,
 // when C is not n x n, not exactly symmetric, not finite, or not positive

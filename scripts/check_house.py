@@ -16,6 +16,7 @@ BELOW['cluster'] = BELOW['run'] | {'run'}
 BELOW['report'] = BELOW['run'] | {'run'}
 BELOW['fuzz'] = BELOW['run'] | {'run'}
 BELOW['app'] = BELOW['run'] | {'run', 'cluster', 'report'}
+BELOW['bench'] = {'evolution'}  # benchmarks beside the product: link it, never linked by it
 SOURCE = ('.cpp', '.hpp', '.cpp.in')
 
 root = sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), '..')

@@ -10,7 +10,6 @@
 #include "evolution/map_elites_state_json.hpp"
 #include "evolution/pipeline.hpp"
 #include "evolution/sep_cma.hpp"
-#include "evolution/sphere_projection.hpp"
 #include "evolution/thread_evaluator.hpp"
 #include "tests/evolution/toy_problems.hpp"
 
@@ -228,52 +227,6 @@ TEST_CASE("full CMA-ES learns a rotated ellipsoid the separable model cannot", "
     }
 }
 
-TEST_CASE("pyribs' update: the textbook's at sigma 1, p_c in x units otherwise, B and d recomputed lazily",
-          "[evolution][cma]") {
-    const std::vector<double> a{1.3, -2.2, 0.9}, b{0.7, -1.6, 0.2};
-    const std::vector<const std::vector<double>*> parents{&a, &b};
-    // sigma = 1, steps inside the clip, h_sigma true in both: the same mean
-    // and paths as the textbook update, and its C but for the rank-one term
-    // weighted c1^2 instead of c1 (sigma's rule differs too).
-    FullCmaState textbook = full_cma_start({1.0, -2.0, 0.5}, 1.0), pyribs = textbook;
-    full_cma_update(textbook, parents);
-    full_cma_update_pyribs(pyribs, parents, 4);
-    const double c1 = cma_rates(parents, 3, /*separable=*/false).c1;
-    for (std::size_t i = 0; i < 3; ++i) {
-        CHECK(pyribs.mean[i] == Approx(textbook.mean[i]).epsilon(1e-14));
-        CHECK(pyribs.path_c[i] == Approx(textbook.path_c[i]).epsilon(1e-14));
-        CHECK(pyribs.path_sigma[i] == Approx(textbook.path_sigma[i]).epsilon(1e-14));
-        for (std::size_t j = 0; j < 3; ++j) {
-            const double rank_one = textbook.path_c[i] * textbook.path_c[j];
-            CHECK(pyribs.covariance[i * 3 + j] ==
-                  Approx(textbook.covariance[i * 3 + j] - (c1 - c1 * c1) * rank_one).epsilon(1e-13));
-        }
-    }
-    CHECK(pyribs.sigma != textbook.sigma);
-    // sigma = 0.5: p_c is sigma times the textbook's (m' - m, not (m' - m) / sigma).
-    FullCmaState half_t = full_cma_start({1.0, -2.0, 0.5}, 0.5), half_p = half_t;
-    full_cma_update(half_t, parents);
-    full_cma_update_pyribs(half_p, parents, 4);
-    for (std::size_t i = 0; i < 3; ++i) CHECK(half_p.path_c[i] == Approx(0.5 * half_t.path_c[i]).epsilon(1e-14));
-    // n = 100, lambda = 36: B and d stay I for two updates and follow C at the third.
-    const std::size_t n = 100;
-    FullCmaState lazy = full_cma_start(std::vector<double>(n, 0.0), 0.5);
-    std::vector<std::vector<double>> xs;
-    for (std::size_t k = 0; k < 18; ++k) {
-        RandomStream stream(7, k);
-        xs.push_back(full_cma_sample(lazy, stream));
-    }
-    std::vector<const std::vector<double>*> mu;
-    for (const auto& x : xs) mu.push_back(&x);
-    const std::vector<double> identity = lazy.basis;
-    for (int u = 1; u <= 3; ++u) {
-        full_cma_update_pyribs(lazy, mu, 36);
-        INFO("update " << u);
-        CHECK((lazy.basis == identity) == (u < 3));
-        CHECK(lazy.decomposed_at == (u < 3 ? 0u : 3u));
-    }
-}
-
 TEST_CASE("the threshold archive moves a cell's threshold by alpha toward a child that beats it", "[evolution][cma]") {
     DescribedSphereProblem problem(6, 2);
     EmitterSpec mae = cma(EmitterKind::cma_mae);
@@ -423,16 +376,3 @@ TEST_CASE("a damaged emitter state or threshold is refused, naming it", "[evolut
     CHECK_THROWS_WITH(load(good, no_mae, 6), Catch::Contains("map_elites"));
 }
 
-TEST_CASE("the sphere linear-projection benchmark: objective 100 at the optimum, clipped descriptors", "[evolution][cma]") {
-    SphereProjection sphere(4);
-    const Evaluation at_optimum = sphere.evaluate(std::vector<double>(4, 2.048), 0);
-    CHECK(at_optimum.score == Approx(100.0));
-    CHECK(at_optimum.descriptors == std::vector<double>{4.096, 4.096});
-    const Evaluation worst = sphere.evaluate(std::vector<double>(4, -5.12), 0);
-    CHECK(worst.score == Approx(0.0).margin(1e-12));
-    // clip(x) = 5.12 / x beyond +-5.12.
-    const Evaluation far = sphere.evaluate(std::vector<double>{10.24, 1.0, -20.48, 3.0}, 0);
-    CHECK(far.descriptors[0] == Approx(0.5 + 1.0));
-    CHECK(far.descriptors[1] == Approx(-0.25 + 3.0));
-    CHECK(sphere.archive_ranges()[0].max == Approx(10.24));
-}

@@ -1,4 +1,4 @@
-#include "evolution/sphere_projection.hpp"
+#include "bench/sphere_projection.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,5 +1,5 @@
-// `morphogen bench-qd`: the sphere linear-projection benchmark (docs/algorithm.md
-// §9.10, evolution/sphere_projection.hpp) run through evolution/'s MAP-Elites
+// `morphogen-bench-qd`: the sphere linear-projection benchmark (docs/algorithm.md
+// §9.10, bench/sphere_projection.hpp) run through evolution/'s MAP-Elites
 // with the settings of the CMA-MAE paper, so the emitters can be checked
 // against its table: 540 births per iteration (one generation), a 100 x 100
 // grid, n = 100, sigma 0.5; MAP-Elites (gaussian on every parameter),
@@ -12,10 +12,13 @@
 // the paper normalises it (the sum of the elites' objectives / cells), the
 // coverage, the best objective, and the time per birth of the whole loop (an
 // upper bound on an emitter's own cost per birth).
-#include "app/commands.hpp"
+#include "bench/pyribs_cma.hpp"
+#include "bench/sphere_projection.hpp"
 #include "evolution/map_elites.hpp"
 #include "evolution/sep_cma.hpp"
-#include "evolution/sphere_projection.hpp"
+
+#include <CLI/CLI.hpp>
+#include <unistd.h>
 
 #include <Eigen/Dense>
 #include <Eigen/Eigenvalues>
@@ -23,7 +26,9 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <iostream>
 #include <map>
 #include <stdexcept>
 
@@ -41,6 +46,7 @@ struct BenchQdOptions {
     std::size_t covariance_cost = 0;  // > 0: time the covariance models at this n instead
     std::string covariance = "diagonal";  // the CMA emitters' model
     double init_range = 1.0;  // generation 0: uniform in [-R, R) per parameter
+    double max_hours = 1.0;  // refuse a run estimated to take longer
 };
 
 constexpr int kPerIteration = 540, kCmaEmitters = 15;
@@ -71,7 +77,7 @@ MapElitesParams params_for(const std::string& algorithm, const std::string& cova
         e.learning_rate = 0.01;
         e.threshold_min = 0.0;
         e.covariance = covariance == "diagonal" ? CmaCovariance::diagonal : CmaCovariance::full;
-        e.pyribs_update = covariance == "pyribs";
+        if (covariance == "pyribs") e.full_update = pyribs_full_update();
         p.emitters.assign(kCmaEmitters, e);
     } else {
         throw std::invalid_argument("unknown algorithm " + algorithm);
@@ -165,7 +171,39 @@ int run_covariance_cost(const BenchQdOptions& o) {
     return 0;
 }
 
+// What the machine can do: the memory the emitters' covariances and the
+// archive take, and the time the eigendecompositions take (about n^3 / 1e9 s
+// each: 0.1 s at n = 500 on one core of the development machine), against
+// the physical memory and --max-hours. Throws std::invalid_argument saying
+// what to change.
+void check_resources(const BenchQdOptions& o) {
+    const double n = static_cast<double>(o.covariance_cost > 0 ? o.covariance_cost : o.dimension);
+    const bool full = o.covariance_cost > 0 || o.covariance != "diagonal";
+    const double gib = 1024.0 * 1024.0 * 1024.0;
+    // Full: C, B and a product per CMA emitter (15; one for --covariance-cost);
+    // diagonal: a few vectors each. The archive: 10,000 elites of n doubles.
+    const double matrices = o.covariance_cost > 0 ? 4.0 : 3.0 * kCmaEmitters;
+    const double bytes = (full ? matrices * n * n : 8.0 * kCmaEmitters * n) * 8.0 + 1e4 * n * 8.0;
+    const double physical = static_cast<double>(::sysconf(_SC_PHYS_PAGES)) * static_cast<double>(::sysconf(_SC_PAGESIZE));
+    if (bytes > 0.8 * physical)
+        throw std::invalid_argument("n = " + std::to_string(static_cast<long long>(n)) + " needs about " +
+                                    std::to_string(static_cast<long long>(bytes / gib + 1)) + " GiB, more than 80 % of " +
+                                    "this machine's " + std::to_string(static_cast<long long>(physical / gib)) +
+                                    " GiB: lower --dimension or --covariance-cost, or use --covariance diagonal");
+    const double eigen_s = n * n * n / 1e9;
+    const double updates = o.covariance_cost > 0 ? 1.0
+                           : full ? static_cast<double>(o.iterations) * kCmaEmitters * static_cast<double>(o.seeds)
+                                  : 0.0;
+    const double hours = eigen_s * updates / 3600.0;
+    if (hours > o.max_hours)
+        throw std::invalid_argument("the full covariance's eigendecompositions alone would take about " +
+                                    std::to_string(static_cast<long long>(hours + 1)) + " hours (--max-hours " +
+                                    std::to_string(o.max_hours) + "): lower --dimension, --iterations or " +
+                                    "--covariance-cost, or raise --max-hours");
+}
+
 int run_bench_qd(const BenchQdOptions& o) {
+    check_resources(o);
     if (o.covariance_cost > 0) return run_covariance_cost(o);
     nlohmann::json report = nlohmann::json::object();
     report["iterations"] = o.iterations;
@@ -208,9 +246,22 @@ int run_bench_qd(const BenchQdOptions& o) {
 
 }  // namespace
 
-void add_bench_qd_command(CLI::App& root, CommandRunner& selected) {
+}  // namespace morphogen
+
+int main(int argc, char** argv) {
+    using namespace morphogen;
     auto options = std::make_shared<BenchQdOptions>();
-    CLI::App* cmd = root.add_subcommand("bench-qd", "Run the sphere linear-projection QD benchmark (emitters vs the papers)");
+    CLI::App app{"morphogen-bench-qd: the sphere linear-projection QD benchmark (emitters vs the papers)"};
+    CLI::App* cmd = &app;
+    // A number as typed: no sign where none is allowed, nothing non-finite.
+    const CLI::Validator whole([](std::string& text) -> std::string {
+        return text.find_first_of("-+") == std::string::npos ? "" : "expected a whole number >= 0, got '" + text + "'";
+    }, "", "whole number");
+    const CLI::Validator finite([](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double value = std::strtod(text.c_str(), &end);
+        return end != text.c_str() && !std::isfinite(value) ? "expected a finite number, got '" + text + "'" : "";
+    }, "", "finite number");
     cmd->add_option("--algorithm", options->algorithms,
                     "map_elites, line, cma_me, cma_mae (default: these four), cma_me_imp (filter, no_improvement)")
         ->check(CLI::IsMember({"map_elites", "line", "cma_me", "cma_mae", "cma_me_imp"}));
@@ -219,7 +270,7 @@ void add_bench_qd_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--dimension", options->dimension, "Parameters n (default 100)")->check(CLI::Range(2, 100000));
     cmd->add_option("--seeds", options->seeds, "Runs per algorithm, seeds seed, seed+1, ... (default 1)")
         ->check(CLI::Range(1, 1000));
-    cmd->add_option("--seed", options->seed, "First seed (default 1)");
+    cmd->add_option("--seed", options->seed, "First seed (default 1)")->check(whole);
     cmd->add_flag("--json", options->json, "Print one JSON object");
     cmd->add_option("--covariance", options->covariance,
                     "The CMA emitters' covariance model: diagonal (sep-CMA-ES, default), full (CMA-ES), "
@@ -228,11 +279,28 @@ void add_bench_qd_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--init-range", options->init_range,
                     "Generation 0 draws every parameter uniformly from [-R, R) (default 1); a tiny R starts "
                     "every CMA emitter at about x0 = 0, as the papers' code does")
+        ->check(finite)
         ->check(CLI::Range(1e-300, 1e6));
     cmd->add_option("--covariance-cost", options->covariance_cost,
                     "Instead: time sampling and updating a diagonal and a full covariance at N parameters")
         ->check(CLI::Range(2, 20000));
-    select_on_pick(cmd, selected, options, run_bench_qd);
+    cmd->add_option("--max-hours", options->max_hours,
+                    "Refuse a run whose full-covariance work is estimated above this (default 1)")
+        ->check(finite)
+        ->check(CLI::PositiveNumber);
+    for (const char* name : {"--iterations", "--dimension", "--covariance-cost"}) app.get_option(name)->check(whole);
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        return app.exit(e) == 0 ? 0 : 2;
+    }
+    try {
+        return run_bench_qd(*options);
+    } catch (const std::invalid_argument& e) {
+        std::cerr << "morphogen-bench-qd: " << e.what() << '\n';
+        return 2;
+    } catch (const std::exception& e) {
+        std::cerr << "morphogen-bench-qd: " << e.what() << '\n';
+        return 1;
+    }
 }
-
-}  // namespace morphogen
