@@ -59,7 +59,9 @@ bool BirthPipeline::run(std::uint64_t target, const OnInsert& on_insert, const s
             if (scored->birth < births || k >= submitted_ || slots_[k].evaluation)
                 throw std::logic_error("the evaluator returned birth " + std::to_string(scored->birth) +
                                        ", which is not in flight");
+            const bool keeps = !scored->evaluation.kept.empty();
             slots_[k].evaluation = std::move(scored->evaluation);
+            if (keeps) bound_waiting_exports();
             continue;
         }
         Slot slot = std::move(slots_.front());
@@ -72,6 +74,18 @@ bool BirthPipeline::run(std::uint64_t target, const OnInsert& on_insert, const s
         on_insert(slot.child, error, what, kept);
     }
     return true;
+}
+
+void BirthPipeline::bound_waiting_exports() {
+    std::size_t waiting = 0;
+    Slot* lowest = nullptr;
+    for (Slot& slot : slots_) {
+        if (!slot.evaluation || slot.evaluation->kept.empty()) continue;
+        ++waiting;
+        // The lowest score (ties: the oldest birth) is the least likely to be exported.
+        if (lowest == nullptr || slot.evaluation->score < lowest->evaluation->score) lowest = &slot;
+    }
+    if (waiting > kMaxWaitingExports) std::string().swap(lowest->evaluation->kept);
 }
 
 std::vector<Individual> BirthPipeline::kept() const {

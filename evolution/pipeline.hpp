@@ -46,6 +46,12 @@ public:
 // descriptors, and `error` ("" when valid).
 void take_evaluation(Individual& child, std::string& error, Evaluation&& evaluation);
 
+// At most this many finished births wait for their insertion with export
+// files (Evaluation::kept); beyond it the lowest-scoring one's are dropped
+// (the run grows that child again if it is exported after all), so a large
+// lag costs memory for its genomes, not for as many meshes.
+inline constexpr std::size_t kMaxWaitingExports = 8;
+
 class BirthPipeline {
 public:
     // `kept`: the births a checkpoint kept (schedule.kept_begin/kept_end of
@@ -77,6 +83,8 @@ private:
     };
     void conceive_due(std::uint64_t target);
     void submit_below(std::uint64_t target);
+    // Keeps at most kMaxWaitingExports waiting slots' export files.
+    void bound_waiting_exports();
 
     BirthSchedule schedule_;
     Breeder& breeder_;

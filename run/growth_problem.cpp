@@ -22,7 +22,8 @@ GrowthProblem::GrowthProblem(const ExperimentConfig& config)
       growth_(config.growth),
       seed_(make_seed(config.growth.seed_mesh, config.growth.seed_radius)),
       fitness_(config.fitness),
-      descriptors_decide_validity_(config.algorithm == Algorithm::map_elites) {
+      descriptors_decide_validity_(config.algorithm == Algorithm::map_elites),
+      keeps_exports_(config.run.export_every > 0) {
     if (!config.qd.descriptors.empty())
         descriptors_.emplace(config.qd.measure_names(), canopy_params_of(config.resolved.at("fitness")));
 }
@@ -99,7 +100,10 @@ Evaluation GrowthProblem::evaluate_mesh(std::span<const double> params, int work
                     break;
                 }
     }
-    if (evaluation.valid && evaluation.score >= keep_from) evaluation.kept = pack_exports(state.mesh.view());
+    // Only a run that exports keeps files: a finished birth waits for its
+    // turn to be inserted with them, so they cost memory per birth in flight.
+    if (keeps_exports_ && evaluation.valid && evaluation.score >= keep_from)
+        evaluation.kept = pack_exports(state.mesh.view());
     return evaluation;
 }
 

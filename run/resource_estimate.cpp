@@ -3,6 +3,7 @@
 #include "core/errors.hpp"
 #include "core/network.hpp"
 #include "evolution/cma_emitter.hpp"
+#include "evolution/pipeline.hpp"
 #include "fitness/canopy.hpp"
 #include "fitness/light.hpp"
 #include "fitness/tree_fitness.hpp"
@@ -293,12 +294,12 @@ SearchGenomes search_genomes(const ExperimentConfig& config) {
         // copy in the run state saved at each checkpoint, the births in flight
         // and their copy in that state, the best.
         const double cells = static_cast<double>(config.qd.cells());
-        return {2 * cells + flight + pending + 3, cells + pending + 1};
+        return {2 * cells + 2 * flight + pending + 3, cells + pending + 1};
     }
     // The population, its copy in the run state saved at each checkpoint, the
-    // births in flight and their copy there, and the best so far (in both
-    // states and one export).
-    return {2 * P + flight + pending + 3, P + pending + 1};
+    // births in flight, their copy in the evaluator's queue and in that
+    // state, and the best so far (in both states and one export).
+    return {2 * P + 2 * flight + pending + 3, P + pending + 1};
 }
 
 ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedExtent& seed, const Workload& w) {
@@ -392,6 +393,16 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
                                                : std::vector<std::string>{"evolution.population",
                                                                           in_flight_key(config.evolution)}),
                             e.genomes.held * (8 * D + genome_overhead)});
+        // Finished births that could become the exported best wait for their
+        // turn with their export files: at most kMaxWaitingExports in the
+        // pipeline and one per thread on its way there.
+        if (config.run.export_every > 0) {
+            const double kept = std::min(births_in_flight(config.evolution),
+                                         static_cast<double>(kMaxWaitingExports) + threads);
+            e.memory.push_back({group(kept) + " finished births keeping the files of a mesh of up to " + group(v) +
+                                    " vertices to export",
+                                {"growth.max_vertices", "run.export_every"}, kept * v * export_bytes_per_vertex});
+        }
         // CMA emitters with a full covariance: C, its eigenvectors, the
         // eigensolver's copy and the update's new C, n x n doubles each; C goes
         // into every checkpoint too.

@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <sys/wait.h>
+
 #include <chrono>
 
 using namespace morphogen;
@@ -93,12 +95,13 @@ TEST_CASE("the estimate counts the genome's parameters as the network does", "[l
     CHECK(e.parameters == 65 + 36 + 28);
     CHECK(e.parameters == random_genome(config.network.layers(), 1.0, 3).params.size());
     CHECK(e.genomes.held == search_genomes(config).held);
-    // Pipeline, lag 64: the population twice, max(lag, P) in flight, lag - 1 kept births twice, the best.
-    CHECK(e.genomes.held == 2 * 100 + 100 + 63 + 3);
+    // Pipeline, lag 64: the population twice, max(lag, P) in flight (and in the evaluator's queue), lag - 1
+    // kept births, the best.
+    CHECK(e.genomes.held == 2 * 100 + 2 * 100 + 63 + 3);
     CHECK(e.genomes.checkpointed == 100 + 63 + 1);
     // The batch schedule: a batch in flight, none kept.
     const ExperimentConfig batch = config_of(R"({"network": {"outputs": 4, "hidden": [5, 6]}, "evolution": {"batch": 32}})");
-    CHECK(search_genomes(batch).held == 2 * 100 + 32 + 3);
+    CHECK(search_genomes(batch).held == 2 * 100 + 2 * 32 + 3);
     CHECK(search_genomes(batch).checkpointed == 100 + 1);
 }
 
@@ -324,4 +327,44 @@ TEST_CASE("grow, score and gallery refuse what they cannot grow", "[limits][cli]
     r = run_morphogen("gallery --config " + big + " --count 2 --seed 1 --out " + (dir.path / "gal").string());
     CHECK(r.code == 2);
     CHECK_FALSE(fs::exists(dir.path / "gal"));
+}
+
+namespace {
+// Runs morphogen with `args` under python3, which prints "peak_kb N", the
+// child's peak resident memory, after its output.
+CliResult run_morphogen_peak(const fs::path& dir, const std::vector<std::string>& args) {
+    std::string command = "python3 -c 'import resource, subprocess, sys; code = subprocess.call(sys.argv[1:]); "
+                          "print(\"peak_kb\", resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss); sys.exit(code)' " +
+                          q(MORPHOGEN_EXE);
+    for (const std::string& a : args) command += " " + q(a);
+    const int status = std::system((command + " > " + q(dir / "peak.txt") + " 2>&1").c_str());
+    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(dir / "peak.txt")};
+}
+}  // namespace
+
+TEST_CASE("the memory estimate bounds the peak of a run with a large lag, exporting or not", "[limits][cli]") {
+    // Births in flight dominate: 4,000 of them, each copied into the
+    // evaluator's queue, and (exporting) each keeping its mesh's files while
+    // it ties the best (no plant reaches height 10 here: all score 0 and do).
+    TempDir dir("limits-lag");
+    for (int export_every : {0, 1}) {
+        CAPTURE(export_every);
+        const std::string text = R"({"network": {"outputs": 4, "hidden": [5]}, "growth": {"steps": 12},
+            "fitness": {"type": "canopy", "height": 10, "cell": 0.1}, "evolution": {"population": 100, "lag": 4000},
+            "run": {"generations": 60, "threads": 2, "export_every": )" + std::to_string(export_every) + "}}";
+        const fs::path run = dir.path / ("run" + std::to_string(export_every));
+        write_text(dir.path / "c.json", text);
+        // Through a small python3 parent: a child forked from this test process
+        // would count the test's own memory in its peak.
+        const CliResult r = run_morphogen_peak(dir.path, {"evolve", (dir.path / "c.json").string(), "--out",
+                                                          run.string(), "--no-report"});
+        INFO(r.output);
+        REQUIRE(r.code == 0);
+        const double peak = 1024.0 * std::stod(r.output.substr(r.output.rfind("peak_kb ") + 8));
+        Workload w = evolution_workload(config_of(text));
+        w.writers = export_every;
+        const double estimate = estimate_of(config_of(text), w).memory_bytes();
+        CAPTURE(peak, estimate);
+        CHECK(peak <= estimate);
+    }
 }

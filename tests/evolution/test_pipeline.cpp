@@ -214,3 +214,70 @@ TEST_CASE("the pipeline refuses an evaluator that returns a birth it was not giv
     BirthPipeline pipeline(birth_schedule(params), ga, liar);
     CHECK_THROWS_AS(pipeline.run(100, ignore, never), std::logic_error);
 }
+
+namespace {
+// The sphere, keeping 1 KB of "export files" for every child at least as fit as keep_from.
+class KeepingProblem : public SphereProblem {
+public:
+    Evaluation evaluate_keeping(std::span<const double> params, int worker, double keep_from) const override {
+        Evaluation e = evaluate(params, worker);
+        if (e.score >= keep_from) e.kept.assign(1024, 'k');
+        return e;
+    }
+};
+
+// Scores the latest birth it holds first, so every other birth in flight
+// waits for the earliest one: the most births ever wait at once.
+class LatestFirstEvaluator : public GenomeEvaluator {
+public:
+    explicit LatestFirstEvaluator(const Problem& problem) : problem_(problem) {}
+    void submit(std::uint64_t birth, std::span<const double> params, double keep_from) override {
+        held_.emplace(birth, Job{std::vector<double>(params.begin(), params.end()), keep_from});
+    }
+    std::optional<ScoredBirth> next(std::chrono::milliseconds) override {
+        if (held_.empty()) return std::nullopt;
+        const auto it = std::prev(held_.end());
+        ScoredBirth out{it->first, evaluate_safely(problem_, it->second.params, 0, it->second.keep_from)};
+        held_.erase(it);
+        return out;
+    }
+    void cancel() override { held_.clear(); }
+    int capacity() const override { return 1; }
+    std::string description() const override { return "latest first"; }
+
+private:
+    struct Job {
+        std::vector<double> params;
+        double keep_from;
+    };
+    const Problem& problem_;
+    std::map<std::uint64_t, Job> held_;
+};
+}  // namespace
+
+TEST_CASE("at most kMaxWaitingExports finished births wait with export files, the fittest of them",
+          "[evolution][pipeline]") {
+    KeepingProblem problem;
+    const GaParams params = ga_params(ScheduleKind::pipeline, 60);
+    SteadyStateGA ga(params, 5, problem);
+    LatestFirstEvaluator evaluator(problem);
+    BirthPipeline pipeline(birth_schedule(params), ga, evaluator);
+    // Generation 0 (20 births, all in flight at once) has no best yet
+    // (export_floor -infinity): every child keeps its files.
+    std::vector<std::pair<double, bool>> inserted;  // fitness, came with files
+    REQUIRE(pipeline.run(20, [&](const Individual& child, const std::string&, const Inserted&,
+                                 const std::string& kept) { inserted.emplace_back(child.fitness, !kept.empty()); },
+                         never));
+    REQUIRE(inserted.size() == 20);
+    std::size_t with_files = 0;
+    double lowest_kept = std::numeric_limits<double>::infinity(), highest_dropped = -lowest_kept;
+    for (const auto& [fitness, kept] : inserted) {
+        with_files += kept ? 1 : 0;
+        (kept ? lowest_kept : highest_dropped) =
+            kept ? std::min(lowest_kept, fitness) : std::max(highest_dropped, fitness);
+    }
+    // Births 1..19 all waited for birth 0, which arrived last.
+    CHECK(with_files <= kMaxWaitingExports + 1);
+    CHECK(with_files >= kMaxWaitingExports);
+    CHECK(highest_dropped <= lowest_kept);  // the lowest-scoring dropped theirs
+}
