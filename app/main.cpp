@@ -3,12 +3,12 @@
 // Under mpirun/srun (cluster/launch.hpp) `evolve` and `resume` run as one job:
 // rank 0 runs the command, the other ranks score its genomes (cluster/).
 #include "app/commands.hpp"
+#include "base/errors.hpp"
 #include "cluster/launch.hpp"
 #include "cluster/protocol.hpp"
 #include "cluster/remote_evaluator.hpp"
 #include "cluster/worker.hpp"
 #include "cluster/world.hpp"
-#include "core/errors.hpp"
 #include "run/evolution_run.hpp"
 #include "run/exit_codes.hpp"
 

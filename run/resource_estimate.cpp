@@ -1,11 +1,11 @@
 #include "run/resource_estimate.hpp"
 
-#include "core/errors.hpp"
-#include "core/network.hpp"
+#include "base/errors.hpp"
 #include "evolution/cma_emitter.hpp"
 #include "fitness/canopy.hpp"
 #include "fitness/light.hpp"
 #include "fitness/tree_fitness.hpp"
+#include "growth/network.hpp"
 #include "run/worker_threads.hpp"
 
 #include <unistd.h>

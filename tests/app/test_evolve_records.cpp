@@ -1,10 +1,10 @@
 // history.csv / lineage.csv rows and the append-only files behind them.
-#include "core/errors.hpp"
+#include "base/errors.hpp"
 #include "run/append_file.hpp"
 #include "run/growth_problem.hpp"
 #include "run/run_records.hpp"
-#include "tests/support/temp_dir.hpp"
 #include "tests/app/evolve_test_support.hpp"
+#include "tests/support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>
 
