@@ -13,6 +13,7 @@
 // (mesh/fan_certificate.hpp), and tested around the vertex where its fan is
 // not certified. Neither changes a decision: a pair is skipped only when it
 // is proven apart.
+#include "growth/flip_pass.hpp"
 #include "mesh/face_listing.hpp"
 #include "mesh/face_pair.hpp"
 #include "mesh/mesh.hpp"

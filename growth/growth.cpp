@@ -266,12 +266,12 @@ void Grower::split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuar
 
 void Grower::flip(GrowthState& state, FlipGuard* guard) const {
     if (guard == nullptr) {
-        state.mesh.flip_pass(flip_criteria_);
+        flip_pass(state.mesh, flip_criteria_);
         return;
     }
     FlipCriteria criteria = flip_criteria_;
     criteria.guard = guard;
-    state.mesh.flip_pass(criteria);
+    flip_pass(state.mesh, criteria);
 }
 
 void Grower::step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times) const {

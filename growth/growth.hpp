@@ -3,6 +3,7 @@
 // seed mesh step by step: think, move, split, flip. Deterministic: the same
 // network, parameters and seed give the same mesh bit for bit.
 #include "growth/collision.hpp"
+#include "growth/flip_pass.hpp"
 #include "growth/growth_params.hpp"
 #include "growth/network.hpp"
 #include "growth/seeds.hpp"

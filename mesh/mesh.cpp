@@ -3,7 +3,6 @@
 #include "base/errors.hpp"
 
 #include <algorithm>
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <unordered_map>
@@ -22,12 +21,6 @@ std::string join_defects(const std::vector<std::string>& defects, std::size_t li
     for (std::size_t i = 0; i < defects.size() && i < limit; ++i) text += (i ? "; " : "") + defects[i];
     if (defects.size() > limit) text += "; ... (" + std::to_string(defects.size() - limit) + " more)";
     return text;
-}
-
-// docs/algorithm.md §5.4's first flip test, |AC| < |BD|: one definition for every caller, so
-// the flip pass's marks and try_flip can never round differently.
-inline bool diagonal_shorter(const Vec3& pa, const Vec3& pb, const Vec3& pc, const Vec3& pd) {
-    return (pc - pa).squaredNorm() < (pd - pb).squaredNorm();
 }
 
 }  // namespace
@@ -143,29 +136,18 @@ int TriMesh::split_face(int f, const Vec3& point) {
     return v;
 }
 
-bool TriMesh::try_flip(int f, int e, const FlipCriteria& criteria) {
-    const int h = 3 * f + e;
-    const int hg = opposite_[h];
+bool TriMesh::can_flip(int f, int e) const {
+    const int hg = opposite_[3 * f + e];
+    const int A = faces_[f][(e + 2) % 3];
+    const int C = faces_[hg / 3][(hg % 3 + 2) % 3];
+    return !(A == C || adjacent(A, C));
+}
+
+void TriMesh::flip(int f, int e) {
+    const int hg = opposite_[3 * f + e];
     const int g = hg / 3;
-    if (!(f < g)) return false;
     const int B = faces_[f][e], D = faces_[f][(e + 1) % 3], A = faces_[f][(e + 2) % 3];
     const int C = faces_[g][(hg % 3 + 2) % 3];
-
-    if (valence_[B] <= criteria.min_valence || valence_[D] <= criteria.min_valence) return false;
-    const Vec3 &pa = positions_[A], &pb = positions_[B], &pc = positions_[C], &pd = positions_[D];
-    if (!diagonal_shorter(pa, pb, pc, pd)) return false;
-
-    const Vec3 cross_abd = (pb - pa).cross(pd - pa);
-    const Vec3 cross_bcd = (pc - pb).cross(pd - pb);
-    const double len_abd = cross_abd.norm(), len_bcd = cross_bcd.norm();
-    if (!(len_abd > 0.0) || !(len_bcd > 0.0)) return false;  // zero area: no normal
-    const Vec3 n_abd = cross_abd / len_abd, n_bcd = cross_bcd / len_bcd;
-    if (!(n_abd.dot(n_bcd) >= criteria.min_normal_dot)) return false;
-    const Vec3 n_sum = n_abd + n_bcd;
-    if (!((pb - pa).cross(pc - pa).dot(n_sum) > 0.0)) return false;
-    if (!((pd - pc).cross(pa - pc).dot(n_sum) > 0.0)) return false;
-    if (A == C || adjacent(A, C)) return false;
-    if (criteria.guard != nullptr && !criteria.guard->allows(*this, f, g, {A, B, C}, {C, D, A})) return false;
 
     // Partners of the four outer edges before the faces are rewritten.
     const int o_ab = opposite_[3 * f + (e + 2) % 3];    // A->B in f
@@ -189,72 +171,6 @@ bool TriMesh::try_flip(int f, int e, const FlipCriteria& criteria) {
     outgoing_[B] = 3 * f + 1;
     outgoing_[C] = 3 * g + 0;
     outgoing_[D] = 3 * g + 1;
-    return true;
-}
-
-bool TriMesh::flip_candidate(int h) const {
-    const int o = opposite_[h];
-    if (!(h < o)) return false;  // the edge is visited from its lower face only (f < g)
-    const Face& t = faces_[h / 3];
-    const int e = h % 3;
-    const Vec3& pb = positions_[t[e]];
-    const Vec3& pd = positions_[t[(e + 1) % 3]];
-    const Vec3& pa = positions_[t[(e + 2) % 3]];
-    const Vec3& pc = positions_[from_vertex(prev(o))];
-    return diagonal_shorter(pa, pb, pc, pd);
-}
-
-int TriMesh::flip_pass(const FlipCriteria& criteria) {
-    // Only a candidate (visited from its lower face, diagonal AC shorter than
-    // BD) can flip, and few are: mark them all in one sweep, then
-    // run try_flip on the marked half-edges in the order of docs/algorithm.md §5.4 (h = 3f + e).
-    // Positions do not move during the pass, so a mark stays right until a flip
-    // rewrites the quad around an edge: the half-edges of the two flipped faces
-    // and their four outer partners. Their marks are recomputed, for those not
-    // yet visited (index > h), so the pass equals the plain loop exactly.
-    const int H = 3 * num_faces();
-    std::vector<std::uint64_t> marks((static_cast<std::size_t>(H) + 63) / 64, 0);
-    // flip_candidate(h) for every h, face by face so each face's positions are
-    // loaded once (calling it per half-edge measured 1.6x slower).
-    for (int f = 0; f < num_faces(); ++f) {
-        const Face& t = faces_[f];
-        const Vec3* p[3] = {&positions_[t[0]], &positions_[t[1]], &positions_[t[2]]};
-        for (int e = 0; e < 3; ++e) {
-            const int h = 3 * f + e, o = opposite_[h];
-            if (!(h < o)) continue;  // (a branch, not a mask: measured 40 % faster)
-            const Vec3& pc = positions_[from_vertex(prev(o))];
-            const bool mark = diagonal_shorter(*p[(e + 2) % 3], *p[e], pc, *p[(e + 1) % 3]);
-            marks[h >> 6] |= static_cast<std::uint64_t>(mark) << (h & 63);
-        }
-    }
-    int flips = 0;
-    for (std::size_t word = 0; word < marks.size(); ++word) {
-        while (marks[word] != 0) {
-            const int h = static_cast<int>(word * 64) + std::countr_zero(marks[word]);
-            marks[word] &= marks[word] - 1;
-            const int f = h / 3, g = opposite_[h] / 3;
-            if (!try_flip(f, h % 3, criteria)) continue;
-            ++flips;
-            int touched[10];
-            for (int k = 0; k < 3; ++k) {
-                touched[k] = 3 * f + k;
-                touched[3 + k] = 3 * g + k;
-            }
-            touched[6] = opposite_[3 * f + 0];  // A->B's partner
-            touched[7] = opposite_[3 * f + 1];  // B->C's partner
-            touched[8] = opposite_[3 * g + 0];  // C->D's partner
-            touched[9] = opposite_[3 * g + 1];  // D->A's partner
-            for (const int u : touched) {
-                if (u <= h) continue;  // already visited in this pass
-                const std::uint64_t bit = std::uint64_t{1} << (u & 63);
-                if (flip_candidate(u))
-                    marks[u >> 6] |= bit;
-                else
-                    marks[u >> 6] &= ~bit;
-            }
-        }
-    }
-    return flips;
 }
 
 std::vector<std::string> TriMesh::check() const {

@@ -3,6 +3,7 @@
 // arrays (structure of arrays), with the two topology operations growth needs
 // (split a face at a point, flip an edge) kept O(1) by a half-edge "opposite"
 // table. Half-edge h = 3*f + k runs from faces[f][k] to faces[f][(k+1)%3].
+// Which edges flip, and when, is the growth model's (growth/flip_pass.hpp).
 //
 // Invariants (checked from scratch by check()/validate()):
 //   every face has three distinct vertex indices in range; every directed edge
@@ -38,24 +39,6 @@ struct MeshArrays {
     MeshView view() const { return {positions, faces}; }
 };
 
-class TriMesh;
-
-// A rule from outside the mesh that may refuse a flip every criterion of
-// docs/algorithm.md §5.4 allows (growth.collisions "prevent", §5.7).
-class FlipGuard {
-public:
-    virtual ~FlipGuard() = default;
-    // Asked last: true means faces f and g are now rewritten to new_f, new_g.
-    virtual bool allows(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g) = 0;
-};
-
-// The conditions of docs/algorithm.md §5.4 under which an edge flip is taken.
-struct FlipCriteria {
-    double min_normal_dot = 0.8660254037844387;  // cos(flip_max_angle_deg)
-    int min_valence = 4;                          // both B and D need valence > this
-    FlipGuard* guard = nullptr;                   // none: every criterion met flips
-};
-
 class TriMesh {
 public:
     TriMesh() = default;
@@ -83,6 +66,9 @@ public:
     // The half-edge paired with h (same edge, other face, reverse direction).
     int opposite(int h) const { return opposite_[h]; }
     static int face_of(int h) { return h / 3; }
+    // The next and the previous half-edge of h's face.
+    static int next(int h) { return h - h % 3 + (h % 3 + 1) % 3; }
+    static int prev(int h) { return h - h % 3 + (h % 3 + 2) % 3; }
     int from_vertex(int h) const { return faces_[h / 3][h % 3]; }
     int to_vertex(int h) const { return faces_[h / 3][(h % 3 + 1) % 3]; }
 
@@ -112,16 +98,16 @@ public:
     // Returns v.
     int split_face(int f, const Vec3& point);
 
-    // Tries to flip local edge e of face f (docs/algorithm.md §5.4): with
-    // B = f[e], D = f[e+1], A = f[e+2] and g the face across B-D with third
-    // vertex C, flips only if f < g and every criterion holds; then
-    // f := (A,B,C), g := (C,D,A). Returns whether it flipped; never throws.
-    bool try_flip(int f, int e, const FlipCriteria& criteria);
+    // Local edge e of face f, with B = f[e], D = f[e+1], A = f[e+2] and g the
+    // face across B-D with third vertex C: whether flipping it to A-C keeps
+    // the mesh a valid one (A != C, and A and C not joined yet, else two
+    // faces would share their vertices). Topology only; when a flip is worth
+    // doing is the growth model's (growth/flip_pass.hpp, docs/algorithm.md §5.4).
+    bool can_flip(int f, int e) const;
 
-    // One flip pass (docs/algorithm.md §5.4): try_flip(f, e) for f = 0..F-1 and
-    // e = 0, 1, 2 in order, each flip taking effect at once. Returns the
-    // number of flips.
-    int flip_pass(const FlipCriteria& criteria);
+    // Flips local edge e of face f (named as in can_flip, which must hold):
+    // f := (A,B,C), g := (C,D,A), in O(1) (docs/algorithm.md §2.2, §5.4).
+    void flip(int f, int e);
 
     // Every invariant above, recomputed from the face list; empty = valid.
     std::vector<std::string> check() const;
@@ -129,16 +115,10 @@ public:
     void validate(const std::string& source = "mesh") const;
 
 private:
-    static int next(int h) { return h - h % 3 + (h % 3 + 1) % 3; }
-    static int prev(int h) { return h - h % 3 + (h % 3 + 2) % 3; }
     void link(int h1, int h2) {
         opposite_[h1] = h2;
         opposite_[h2] = h1;
     }
-    // Whether half-edge h could flip in a pass: h < opposite(h) (the edge's
-    // lower face visits it) and the other diagonal is shorter (the first
-    // test of docs/algorithm.md §5.4). Every flip needs this; few edges have it.
-    bool flip_candidate(int h) const;
     // Rebuilds opposite/valence/outgoing from faces; returns defects found.
     std::vector<std::string> build_topology();
 
