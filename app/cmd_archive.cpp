@@ -3,8 +3,8 @@
 // optionally the map of elites as a PNG (each occupied cell's plant at its
 // place on the descriptor grid, beside a fitness heatmap).
 #include "app/commands.hpp"
-#include "core/atomic_file.hpp"
-#include "core/errors.hpp"
+#include "base/atomic_file.hpp"
+#include "base/errors.hpp"
 #include "report/render.hpp"
 #include "run/checkpoint.hpp"
 #include "run/experiment_config.hpp"

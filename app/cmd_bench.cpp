@@ -4,7 +4,7 @@
 // figure (shared machines are noisy: one pass proves little).
 #include "app/commands.hpp"
 #include "app/fma_peak.hpp"
-#include "core/growth.hpp"
+#include "growth/growth.hpp"
 #include "run/experiment_config.hpp"
 #include "run/genome_source.hpp"
 

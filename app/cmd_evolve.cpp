@@ -2,7 +2,7 @@
 // runs the GA (evolution_run.hpp).
 #include "app/commands.hpp"
 #include "app/resource_options.hpp"
-#include "core/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "report/end_of_run.hpp"
 #include "run/archive_csv.hpp"
 #include "run/evolution_run.hpp"

@@ -2,9 +2,9 @@
 // it had never stopped.
 #include "app/commands.hpp"
 #include "app/resource_options.hpp"
-#include "core/atomic_file.hpp"
-#include "core/config_reader.hpp"
-#include "core/errors.hpp"
+#include "base/atomic_file.hpp"
+#include "base/config_reader.hpp"
+#include "base/errors.hpp"
 #include "report/end_of_run.hpp"
 #include "run/archive_csv.hpp"
 #include "run/checkpoint_checks.hpp"

@@ -2,11 +2,11 @@
 // from a file or grown from a genome.
 #include "app/commands.hpp"
 #include "app/resource_options.hpp"
-#include "core/config_reader.hpp"
-#include "core/errors.hpp"
-#include "core/growth.hpp"
-#include "core/mesh_io.hpp"
+#include "base/config_reader.hpp"
+#include "base/errors.hpp"
 #include "fitness/fitness.hpp"
+#include "growth/growth.hpp"
+#include "io/mesh_io.hpp"
 #include "run/experiment_config.hpp"
 #include "run/genome_source.hpp"
 

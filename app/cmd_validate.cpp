@@ -4,8 +4,8 @@
 // a seed mesh that is not usable (the first of these wins over later ones, 2 over all).
 #include "app/commands.hpp"
 #include "app/resource_options.hpp"
-#include "core/errors.hpp"
-#include "core/seeds.hpp"
+#include "base/errors.hpp"
+#include "growth/seeds.hpp"
 #include "run/exit_codes.hpp"
 #include "run/experiment_config.hpp"
 

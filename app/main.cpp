@@ -4,12 +4,12 @@
 // rank 0 runs the command, the other ranks score its genomes (cluster/).
 #include "app/commands.hpp"
 #include "app/numeric_options.hpp"
+#include "base/errors.hpp"
 #include "cluster/launch.hpp"
 #include "cluster/protocol.hpp"
 #include "cluster/remote_evaluator.hpp"
 #include "cluster/worker.hpp"
 #include "cluster/world.hpp"
-#include "core/errors.hpp"
 #include "run/evolution_run.hpp"
 #include "run/exit_codes.hpp"
 

@@ -1,6 +1,6 @@
 #pragma once
 // Simple shape numbers reported by grow and gallery.
-#include "core/mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace morphogen {
 

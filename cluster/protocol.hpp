@@ -47,7 +47,7 @@ struct Ready {
     std::string cpu;  // cpu_kind() of the worker
 };
 
-// Which of the kernels' builds (core/: x86-64-v3 with FMA, or baseline) this
+// Which of the kernels' builds (growth/: x86-64-v3 with FMA, or baseline) this
 // CPU runs; processes that differ would round the network differently, so a
 // run's bytes would depend on where a genome was scored.
 std::string cpu_kind();

@@ -1,5 +1,6 @@
 #include "evolution/pipeline.hpp"
 
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -42,8 +43,13 @@ void BirthPipeline::conceive_due(std::uint64_t target) {
 
 void BirthPipeline::submit_below(std::uint64_t target) {
     const std::uint64_t births = breeder_.births();
-    for (; submitted_ < slots_.size() && births + submitted_ < target; ++submitted_)
-        evaluator_.submit(births + submitted_, slots_[submitted_].child.params, breeder_.export_floor());
+    for (; submitted_ < slots_.size() && births + submitted_ < target; ++submitted_) {
+        Slot& slot = slots_[submitted_];
+        slot.may_keep = keeping_ < kMaxKeepingBirths;
+        keeping_ += slot.may_keep ? 1 : 0;
+        evaluator_.submit(births + submitted_, slot.child.params,
+                          slot.may_keep ? breeder_.export_floor() : std::numeric_limits<double>::infinity());
+    }
 }
 
 bool BirthPipeline::run(std::uint64_t target, const OnInsert& on_insert, const std::function<bool()>& stop) {
@@ -59,14 +65,13 @@ bool BirthPipeline::run(std::uint64_t target, const OnInsert& on_insert, const s
             if (scored->birth < births || k >= submitted_ || slots_[k].evaluation)
                 throw std::logic_error("the evaluator returned birth " + std::to_string(scored->birth) +
                                        ", which is not in flight");
-            const bool keeps = !scored->evaluation.kept.empty();
             slots_[k].evaluation = std::move(scored->evaluation);
-            if (keeps) bound_waiting_exports();
             continue;
         }
         Slot slot = std::move(slots_.front());
         slots_.pop_front();
         --submitted_;
+        keeping_ -= slot.may_keep ? 1 : 0;
         std::string error;
         const std::string kept = std::move(slot.evaluation->kept);
         take_evaluation(slot.child, error, std::move(*slot.evaluation));
@@ -74,18 +79,6 @@ bool BirthPipeline::run(std::uint64_t target, const OnInsert& on_insert, const s
         on_insert(slot.child, error, what, kept);
     }
     return true;
-}
-
-void BirthPipeline::bound_waiting_exports() {
-    std::size_t waiting = 0;
-    Slot* lowest = nullptr;
-    for (Slot& slot : slots_) {
-        if (!slot.evaluation || slot.evaluation->kept.empty()) continue;
-        ++waiting;
-        // The lowest score (ties: the oldest birth) is the least likely to be exported.
-        if (lowest == nullptr || slot.evaluation->score < lowest->evaluation->score) lowest = &slot;
-    }
-    if (waiting > kMaxWaitingExports) std::string().swap(lowest->evaluation->kept);
 }
 
 std::vector<Individual> BirthPipeline::kept() const {

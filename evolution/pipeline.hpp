@@ -46,11 +46,12 @@ public:
 // descriptors, and `error` ("" when valid).
 void take_evaluation(Individual& child, std::string& error, Evaluation&& evaluation);
 
-// At most this many finished births wait for their insertion with export
-// files (Evaluation::kept); beyond it the lowest-scoring one's are dropped
-// (the run grows that child again if it is exported after all), so a large
-// lag costs memory for its genomes, not for as many meshes.
-inline constexpr std::size_t kMaxWaitingExports = 8;
+// At most this many births in flight (submitted, not yet inserted) may keep
+// export files (Evaluation::kept): the others are submitted with nothing to
+// keep, and the run grows such a child again if it is exported after all.
+// So a large lag costs memory for its genomes, not for as many meshes, in
+// the evaluator's queues as in the pipeline.
+inline constexpr std::size_t kMaxKeepingBirths = 8;
 
 class BirthPipeline {
 public:
@@ -80,17 +81,17 @@ private:
     struct Slot {
         Individual child;
         std::optional<Evaluation> evaluation;
+        bool may_keep = false;  // submitted with a keep_from (one of kMaxKeepingBirths)
     };
     void conceive_due(std::uint64_t target);
     void submit_below(std::uint64_t target);
-    // Keeps at most kMaxWaitingExports waiting slots' export files.
-    void bound_waiting_exports();
 
     BirthSchedule schedule_;
     Breeder& breeder_;
     GenomeEvaluator& evaluator_;
     std::deque<Slot> slots_;    // births breeder_.births() + k, conceived, in order
     std::size_t submitted_ = 0;  // slots_[0, submitted_) went to the evaluator
+    std::size_t keeping_ = 0;    // slots with may_keep
 };
 
 }  // namespace morphogen

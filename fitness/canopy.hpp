@@ -6,7 +6,7 @@
 // ((i+0.5)*cell, (j+0.5)*cell) exceeds `height`. A centre on a triangle's edge
 // or vertex is inside it (exact predicates decide); triangles whose
 // xy-projection has zero area are skipped. Score = counted cells x cell^2.
-#include "core/mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <cstdint>
 #include <utility>

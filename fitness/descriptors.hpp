@@ -5,8 +5,8 @@
 // (canopy_params_of), thread-safe. A measure may be non-finite for a
 // degenerate mesh (e.g. slenderness of a zero footprint): the search then
 // treats the child as invalid.
-#include "core/mesh.hpp"
 #include "fitness/canopy.hpp"
+#include "mesh/mesh.hpp"
 
 #include <span>
 #include <string>

@@ -7,7 +7,7 @@
 // the mesh (CGAL AABB tree) has z >= min_height: the mesh shades itself. The
 // score is the mean over suns, an area comparable with the canopy's: a flat
 // horizontal square under a vertical sun captures its own area.
-#include "core/mesh.hpp"
+#include "mesh/mesh.hpp"
 
 #include <vector>
 

@@ -13,8 +13,8 @@
 // T and B saturate at the criteria, so nothing is gained by a thinner
 // trunk or more loops than a tree needs; light and cost keep the pressure on.
 // Above the target, a stem 10 % thinner is worth trunk_power × 10 % more light.
-#include "core/mesh.hpp"
 #include "fitness/light.hpp"
+#include "mesh/mesh.hpp"
 
 namespace morphogen {
 

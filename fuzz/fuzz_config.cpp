@@ -1,9 +1,9 @@
 // Fuzz target "config": the bytes as an experiment config, read the way
-// `morphogen validate` reads one (core/config_reader.hpp parse_json_text, then
+// `morphogen validate` reads one (base/config_reader.hpp parse_json_text, then
 // run/experiment_config.hpp read_experiment_config, then the seed check).
-#include "core/config_reader.hpp"
-#include "core/seeds.hpp"
+#include "base/config_reader.hpp"
 #include "fuzz/fuzz_target.hpp"
+#include "growth/seeds.hpp"
 #include "run/experiment_config.hpp"
 
 namespace morphogen::fuzz {

@@ -1,15 +1,15 @@
 // Fuzz target "mesh": the bytes as a mesh file, read as `score --mesh` and a
-// seed file are read: core/mesh_io.hpp read_mesh, then TriMesh::from_arrays
+// seed file are read: io/mesh_io.hpp read_mesh, then TriMesh::from_arrays
 // (the topology checks) and the seed's growth directions.
 //
 // The first byte picks the format, the rest is the file: 'o' OBJ, 'p' PLY,
 // 'f' OFF, 's' STL (any other byte: its value mod 4 in that order). Corpus
 // files in tests/corpus/mesh/ are plain mesh files; the replay and
 // scripts/fuzz.sh prefix the byte their extension names (input_from_file).
-#include "core/mesh.hpp"
-#include "core/seeds.hpp"
 #include "fuzz/fuzz_target.hpp"
 #include "fuzz/path_readers.hpp"
+#include "growth/seeds.hpp"
+#include "mesh/mesh.hpp"
 
 #include <algorithm>
 #include <cctype>

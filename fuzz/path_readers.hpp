@@ -1,10 +1,10 @@
 #pragma once
 // How fuzz targets hand bytes to readers: meshes go to the in-memory
-// parse_mesh (core/mesh_io.hpp, the same parser read_mesh uses); the
+// parse_mesh (io/mesh_io.hpp, the same parser read_mesh uses); the
 // checkpoint reader takes a path (run/checkpoint.hpp load_checkpoint), so its
 // bytes are written to a per-process scratch file in /dev/shm first.
-#include "core/mesh.hpp"
-#include "core/mesh_io.hpp"
+#include "io/mesh_io.hpp"
+#include "mesh/mesh.hpp"
 #include "run/checkpoint.hpp"
 
 #include <string_view>

@@ -1,10 +1,10 @@
 // The growth as frames, an animated glTF and an OBJ sequence (see growth_animation.hpp).
 #include "report/growth_animation.hpp"
 
-#include "core/atomic_file.hpp"
-#include "core/errors.hpp"
-#include "core/gltf_mesh.hpp"
-#include "core/mesh_io.hpp"
+#include "base/atomic_file.hpp"
+#include "base/errors.hpp"
+#include "io/gltf_mesh.hpp"
+#include "io/mesh_io.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Software rasteriser and contact sheets (see render.hpp).
 #include "report/render.hpp"
 
-#include "core/errors.hpp"
+#include "base/errors.hpp"
 
 #include <Eigen/Geometry>
 

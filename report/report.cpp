@@ -1,9 +1,9 @@
 #include "report/report.hpp"
 
-#include "core/atomic_file.hpp"
-#include "core/config_reader.hpp"
-#include "core/errors.hpp"
-#include "core/mesh_io.hpp"
+#include "base/atomic_file.hpp"
+#include "base/config_reader.hpp"
+#include "base/errors.hpp"
+#include "io/mesh_io.hpp"
 #include "report/render.hpp"
 #include "report/report_animation.hpp"
 #include "report/report_assets.hpp"

@@ -1,7 +1,7 @@
 #pragma once
 // The report's growth animation of a genome: the animated glTF of
 // growth_animation.hpp (one node per frame, STEP scale keys), as bytes.
-#include "core/network.hpp"
+#include "growth/network.hpp"
 #include "run/experiment_config.hpp"
 
 #include <optional>

@@ -1,7 +1,7 @@
 #include "report/report_data.hpp"
 
-#include "core/atomic_file.hpp"
-#include "core/errors.hpp"
+#include "base/atomic_file.hpp"
+#include "base/errors.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -1,7 +1,7 @@
 #include "run/append_file.hpp"
 
-#include "core/atomic_file.hpp"
-#include "core/errors.hpp"
+#include "base/atomic_file.hpp"
+#include "base/errors.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>

@@ -3,9 +3,9 @@
 #include "evolution/archive_stats.hpp"
 #include "evolution/operators.hpp"
 #include "evolution/population_stats.hpp"
-#include "run/run_records.hpp"
-#include "core/network.hpp"
 #include "evolution/schedule.hpp"
+#include "growth/network.hpp"
+#include "run/run_records.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -1,7 +1,8 @@
 #include "run/evolution_run.hpp"
 
-#include "core/atomic_file.hpp"
-#include "core/errors.hpp"
+#include "base/atomic_file.hpp"
+#include "base/errors.hpp"
+#include "evolution/thread_evaluator.hpp"
 #include "run/exit_codes.hpp"
 #include "run/growth_problem.hpp"
 #include "run/io_thread.hpp"
@@ -9,7 +10,6 @@
 #include "run/search_drivers.hpp"
 #include "run/stop_signals.hpp"
 #include "run/worker_threads.hpp"
-#include "evolution/thread_evaluator.hpp"
 
 #include <spdlog/sinks/basic_file_sink.h>
 #include <spdlog/sinks/stdout_color_sinks.h>

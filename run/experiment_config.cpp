@@ -1,6 +1,6 @@
 #include "run/experiment_config.hpp"
 
-#include "core/config_reader.hpp"
+#include "base/config_reader.hpp"
 
 #include <filesystem>
 

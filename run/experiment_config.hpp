@@ -5,9 +5,9 @@
 // range) and throws one ConfigError listing them all with their key paths.
 // configs/schema.json documents the same keys, ranges and defaults (a test
 // keeps the two in step).
-#include "core/growth_params.hpp"
 #include "evolution/ga_params.hpp"
 #include "fitness/fitness.hpp"
+#include "growth/growth_params.hpp"
 #include "run/map_elites_config.hpp"
 
 #include <nlohmann/json.hpp>

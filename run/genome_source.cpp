@@ -1,8 +1,8 @@
 #include "run/genome_source.hpp"
 
-#include "core/errors.hpp"
-#include "core/genome_io.hpp"
+#include "base/errors.hpp"
 #include "evolution/rng.hpp"
+#include "growth/genome_io.hpp"
 
 namespace morphogen {
 

@@ -1,9 +1,9 @@
 #include "run/growth_problem.hpp"
 
-#include "core/atomic_file.hpp"
-#include "core/genome_io.hpp"
-#include "core/mesh_io.hpp"
-#include "core/network.hpp"
+#include "base/atomic_file.hpp"
+#include "growth/genome_io.hpp"
+#include "growth/network.hpp"
+#include "io/mesh_io.hpp"
 
 #include <cmath>
 #include <cstring>

@@ -2,10 +2,10 @@
 // The experiment as a GA Problem: a genome (parameter vector) becomes a
 // Network, grows the config's seed mesh with core's Grower, and is scored by
 // the config's Fitness. This is the one place where evolution meets meshes.
-#include "core/growth.hpp"
-#include "core/seeds.hpp"
 #include "evolution/problem.hpp"
 #include "fitness/descriptors.hpp"
+#include "growth/growth.hpp"
+#include "growth/seeds.hpp"
 #include "run/experiment_config.hpp"
 
 #include <filesystem>

@@ -5,7 +5,7 @@
 // "map_elites" (and `descriptors` when a steady-state config gives it), so a
 // steady-state config without them resolves to the same bytes as before they
 // existed (its config.json and checkpoints are unchanged).
-#include "core/config_reader.hpp"
+#include "base/config_reader.hpp"
 #include "evolution/archive.hpp"
 #include "evolution/emitters.hpp"
 

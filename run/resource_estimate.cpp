@@ -1,12 +1,12 @@
 #include "run/resource_estimate.hpp"
 
-#include "core/errors.hpp"
-#include "core/network.hpp"
+#include "base/errors.hpp"
 #include "evolution/cma_emitter.hpp"
 #include "evolution/pipeline.hpp"
 #include "fitness/canopy.hpp"
 #include "fitness/light.hpp"
 #include "fitness/tree_fitness.hpp"
+#include "growth/network.hpp"
 #include "run/worker_threads.hpp"
 
 #include <unistd.h>
@@ -393,13 +393,12 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
                                                : std::vector<std::string>{"evolution.population",
                                                                           in_flight_key(config.evolution)}),
                             e.genomes.held * (8 * D + genome_overhead)});
-        // Finished births that could become the exported best wait for their
-        // turn with their export files: at most kMaxWaitingExports in the
-        // pipeline and one per thread on its way there.
+        // Births that could become the exported best keep their export files
+        // until they are inserted: at most kMaxKeepingBirths in flight.
         if (config.run.export_every > 0) {
-            const double kept = std::min(births_in_flight(config.evolution),
-                                         static_cast<double>(kMaxWaitingExports) + threads);
-            e.memory.push_back({group(kept) + " finished births keeping the files of a mesh of up to " + group(v) +
+            const double kept =
+                std::min(births_in_flight(config.evolution), static_cast<double>(kMaxKeepingBirths));
+            e.memory.push_back({group(kept) + " births in flight keeping the files of a mesh of up to " + group(v) +
                                     " vertices to export",
                                 {"growth.max_vertices", "run.export_every"}, kept * v * export_bytes_per_vertex});
         }

@@ -26,8 +26,8 @@
 //    --no-limits skips the check (plants beyond a cap then score invalid).
 //  - The genomes the search holds are counted in one place,
 //    search_genomes(): a MAP-Elites archive adds its cells there.
-#include "core/config_reader.hpp"
-#include "core/seeds.hpp"
+#include "base/config_reader.hpp"
+#include "growth/seeds.hpp"
 #include "run/experiment_config.hpp"
 
 #include <cstdint>

@@ -1,7 +1,7 @@
 #include "run/run_directory.hpp"
 
-#include "core/atomic_file.hpp"
-#include "core/errors.hpp"
+#include "base/atomic_file.hpp"
+#include "base/errors.hpp"
 #include "run/run_records.hpp"
 
 #include <fcntl.h>

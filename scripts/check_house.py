@@ -9,9 +9,13 @@ import re
 import sys
 
 BELOW = {
-    'core': set(), 'evolution': set(), 'fitness': {'core'},
-    'run': {'core', 'fitness', 'evolution'},
+    'base': set(), 'evolution': set(),
+    'mesh': {'base'},
+    'io': {'base', 'mesh'},
+    'growth': {'base', 'mesh', 'io'},
+    'fitness': {'base', 'mesh'},
 }
+BELOW['run'] = BELOW['growth'] | {'growth', 'fitness', 'evolution'}
 BELOW['cluster'] = BELOW['run'] | {'run'}
 BELOW['report'] = BELOW['run'] | {'run'}
 BELOW['fuzz'] = BELOW['run'] | {'run'}

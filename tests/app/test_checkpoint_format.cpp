@@ -3,11 +3,11 @@
 // and resuming, refusal of every damaged byte of the binary part and of
 // contradicting genome references, and the size of a large archive. A hidden
 // benchmark ("[.][bench]") measures save and load times for docs/performance.md.
-#include "core/atomic_file.hpp"
-#include "core/errors.hpp"
-#include "core/network.hpp"
+#include "base/atomic_file.hpp"
+#include "base/errors.hpp"
 #include "evolution/ga_state_json.hpp"
 #include "evolution/map_elites_state_json.hpp"
+#include "growth/network.hpp"
 #include "run/checkpoint.hpp"
 #include "run/experiment_config.hpp"
 #include "run/run_records.hpp"

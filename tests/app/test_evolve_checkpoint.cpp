@@ -1,7 +1,7 @@
 // Checkpoint files: exact round trip, and refusal of every truncation and
 // every single changed byte, of other versions and formats, and of contents
 // that contradict themselves or lineage.csv though their hash matches.
-#include "core/errors.hpp"
+#include "base/errors.hpp"
 #include "run/checkpoint.hpp"
 #include "run/checkpoint_checks.hpp"
 #include "run/fnv_hash.hpp"

@@ -2,7 +2,7 @@
 // suggestions, invalid JSON with line and column, overrides, and
 // configs/schema.json kept in step with the reader (validation of the
 // shipped configs, defaults and ranges compared key by key).
-#include "core/errors.hpp"
+#include "base/errors.hpp"
 #include "fitness/descriptors.hpp"
 #include "run/experiment_config.hpp"
 #include "run/resource_estimate.hpp"

@@ -1,10 +1,10 @@
 // history.csv / lineage.csv rows and the append-only files behind them.
-#include "core/errors.hpp"
+#include "base/errors.hpp"
 #include "run/append_file.hpp"
 #include "run/growth_problem.hpp"
 #include "run/run_records.hpp"
-#include "tests/support/temp_dir.hpp"
 #include "tests/app/evolve_test_support.hpp"
+#include "tests/support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -85,9 +85,14 @@ TEST_CASE("an append file resumes at a recorded length and refuses a changed pre
 
 TEST_CASE("a mesh kept from its evaluation exports the bytes of one grown again", "[app][records][export]") {
     TempDir tmp("kept-export");
-    const ExperimentConfig config = read_experiment_config(nlohmann::json::parse(tiny_config(2)), "tiny");
+    auto exporting = nlohmann::json::parse(tiny_config(2));
+    exporting["run"]["export_every"] = 1;
+    const ExperimentConfig config = read_experiment_config(exporting, "tiny");
     GrowthProblem problem(config);
     problem.prepare(1);
+    // A run that exports nothing keeps nothing.
+    GrowthProblem silent(read_experiment_config(nlohmann::json::parse(tiny_config(2)), "tiny"));
+    silent.prepare(1);
     std::mt19937_64 random(5);
     std::normal_distribution<double> normal(0.0, 1.0);
     int compared = 0;
@@ -100,6 +105,7 @@ TEST_CASE("a mesh kept from its evaluation exports the bytes of one grown again"
         CHECK(kept.score == plain.score);
         if (!kept.valid) continue;
         REQUIRE_FALSE(kept.kept.empty());
+        CHECK(silent.evaluate_keeping(genome, 0, -std::numeric_limits<double>::infinity()).kept.empty());
         // A threshold above the score keeps nothing.
         CHECK(problem.evaluate_keeping(genome, 0, kept.score + 1).kept.empty());
         const fs::path a = tmp.path / ("kept" + std::to_string(trial)), b = tmp.path / ("grown" + std::to_string(trial));

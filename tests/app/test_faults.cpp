@@ -3,7 +3,7 @@
 // best/, leftovers of a crash. Every stopped run must end, after `resume` (or
 // `evolve` again where it stopped before its first checkpoint), with exactly
 // the files of an uninterrupted run.
-#include "core/atomic_file.hpp"
+#include "base/atomic_file.hpp"
 #include "run/checkpoint.hpp"
 #include "tests/app/evolve_test_support.hpp"
 

@@ -2,7 +2,7 @@
 // (exit 3), checkpoints (exit 5, left byte-identical). Every refusal is one
 // line naming the file. Also replays every file of tests/corpus/{config,
 // genome,checkpoint}: each must be refused with its documented exit code.
-#include "core/errors.hpp"
+#include "base/errors.hpp"
 #include "run/checkpoint.hpp"
 #include "tests/app/evolve_test_support.hpp"
 

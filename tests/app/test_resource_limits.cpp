@@ -1,7 +1,7 @@
 // Resource limits (run/resource_estimate.hpp): the estimates against measured
 // facts of real growths and runs, the refusals, and the options that lift them.
-#include "core/growth.hpp"
-#include "core/network.hpp"
+#include "growth/growth.hpp"
+#include "growth/network.hpp"
 #include "run/experiment_config.hpp"
 #include "run/genome_source.hpp"
 #include "run/resource_estimate.hpp"

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <map>
+#include <numeric>
 #include <random>
 
 using namespace morphogen;
@@ -255,29 +256,26 @@ private:
 };
 }  // namespace
 
-TEST_CASE("at most kMaxWaitingExports finished births wait with export files, the fittest of them",
-          "[evolution][pipeline]") {
+TEST_CASE("at most kMaxKeepingBirths births in flight keep export files", "[evolution][pipeline]") {
     KeepingProblem problem;
     const GaParams params = ga_params(ScheduleKind::pipeline, 60);
     SteadyStateGA ga(params, 5, problem);
     LatestFirstEvaluator evaluator(problem);
     BirthPipeline pipeline(birth_schedule(params), ga, evaluator);
-    // Generation 0 (20 births, all in flight at once) has no best yet
-    // (export_floor -infinity): every child keeps its files.
-    std::vector<std::pair<double, bool>> inserted;  // fitness, came with files
+    // Every birth could keep its files (the sphere's scores always reach the
+    // floor of generation 0, -infinity), and all of generation 0 waits for
+    // birth 0, which is scored last.
+    std::vector<std::uint64_t> with_files;
     REQUIRE(pipeline.run(20, [&](const Individual& child, const std::string&, const Inserted&,
-                                 const std::string& kept) { inserted.emplace_back(child.fitness, !kept.empty()); },
+                                 const std::string& kept) { if (!kept.empty()) with_files.push_back(child.id); },
                          never));
-    REQUIRE(inserted.size() == 20);
-    std::size_t with_files = 0;
-    double lowest_kept = std::numeric_limits<double>::infinity(), highest_dropped = -lowest_kept;
-    for (const auto& [fitness, kept] : inserted) {
-        with_files += kept ? 1 : 0;
-        (kept ? lowest_kept : highest_dropped) =
-            kept ? std::min(lowest_kept, fitness) : std::max(highest_dropped, fitness);
-    }
-    // Births 1..19 all waited for birth 0, which arrived last.
-    CHECK(with_files <= kMaxWaitingExports + 1);
-    CHECK(with_files >= kMaxWaitingExports);
-    CHECK(highest_dropped <= lowest_kept);  // the lowest-scoring dropped theirs
+    std::vector<std::uint64_t> first(kMaxKeepingBirths);
+    std::iota(first.begin(), first.end(), 0);
+    CHECK(with_files == first);  // the first births submitted hold the budget
+    // Freed budget passes on: later births keep files again.
+    with_files.clear();
+    REQUIRE(pipeline.run(200, [&](const Individual& child, const std::string&, const Inserted&,
+                                  const std::string& kept) { if (!kept.empty()) with_files.push_back(child.id); },
+                         never));
+    CHECK_FALSE(with_files.empty());
 }

@@ -1,8 +1,8 @@
 // Canopy (docs/algorithm.md §10.1): known answers, the exact-edge rule, and the
 // z-buffer agreeing cell for cell with CGAL ray shooting.
-#include "core/growth.hpp"
 #include "fitness/canopy.hpp"
 #include "fitness/measures.hpp"
+#include "growth/growth.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,9 +1,9 @@
 // growth.collisions "prevent" (docs/algorithm.md §5.7) against the fitness
 // side's own check, CGAL's does_self_intersect (mesh_self_intersects): grown
 // meshes never self-intersect, where "allow" grows many that do.
-#include "core/growth.hpp"
 #include "fitness/cgal_geometry.hpp"
-#include "tests/support/test_meshes.hpp"
+#include "growth/growth.hpp"
+#include "tests/support/test_genomes.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
 // The growth animation: frame choice, the animated glTF read back with
 // tinygltf (nodes, meshes, accessors, STEP scale keys, one frame visible at a
 // time) and `grow --animate/--frames-obj` end to end, hostile options included.
-#include "core/errors.hpp"
-#include "core/mesh_io.hpp"
+#include "base/errors.hpp"
+#include "io/mesh_io.hpp"
 #include "report/growth_animation.hpp"
 #include "run/experiment_config.hpp"
 #include "run/genome_source.hpp"

@@ -1,7 +1,7 @@
 // The software renderer, contact sheets and the `render` subcommand.
 #include "app/commands.hpp"
-#include "core/errors.hpp"
-#include "core/mesh_io.hpp"
+#include "base/errors.hpp"
+#include "io/mesh_io.hpp"
 #include "report/render.hpp"
 #include "tests/support/temp_dir.hpp"
 

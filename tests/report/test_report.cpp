@@ -3,7 +3,7 @@
 // half-written), the run directory left untouched, and the exit codes and
 // messages for non-run and damaged directories. The page itself is checked
 // in headless Chromium by tests/report/ (CTest).
-#include "core/errors.hpp"
+#include "base/errors.hpp"
 #include "report/report.hpp"
 #include "report/report_data.hpp"
 #include "run/run_directory.hpp"

@@ -3,9 +3,9 @@
 // straight from the text with different data structures (maps and sets, the
 // per-vertex pseudocode network). The growth tests check that the engine and
 // this agree to rounding error.
-#include "core/growth_params.hpp"
-#include "core/network.hpp"
-#include "core/seeds.hpp"
+#include "growth/growth_params.hpp"
+#include "growth/network.hpp"
+#include "growth/seeds.hpp"
 
 #include <cmath>
 #include <map>

@@ -1,8 +1,6 @@
 #pragma once
-// Small meshes and helpers shared by the tests.
-#include "core/mesh.hpp"
-#include "core/network.hpp"
-#include "evolution/rng.hpp"
+// Small meshes and helpers shared by the tests (the mesh room only).
+#include "mesh/mesh.hpp"
 
 #include <string>
 #include <utility>
@@ -25,11 +23,6 @@ inline std::pair<int, int> find_half_edge(const TriMesh& mesh, int from, int to)
         for (int e = 0; e < 3; ++e)
             if (mesh.face(f)[e] == from && mesh.face(f)[(e + 1) % 3] == to) return {f, e};
     return {-1, -1};
-}
-
-inline Genome random_test_genome(const std::vector<int>& layers, std::uint64_t seed, double range = 2.0) {
-    RandomStream stream(seed, 0);
-    return Genome{layers, random_parameters(parameter_count(layers), range, stream)};
 }
 
 }  // namespace morphogen::testing

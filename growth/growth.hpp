@@ -1,0 +1,94 @@
+#pragma once
+// Growth (docs/algorithm.md §4-§5): the network, copied at every vertex, grows a
+// seed mesh step by step: think, move, split, flip. Deterministic: the same
+// network, parameters and seed give the same mesh bit for bit.
+#include "growth/collision.hpp"
+#include "growth/flip_pass.hpp"
+#include "growth/growth_params.hpp"
+#include "growth/network.hpp"
+#include "growth/seeds.hpp"
+#include "mesh/mesh.hpp"
+
+#include <Eigen/Core>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace morphogen {
+
+struct GrowthState {
+    TriMesh mesh;
+    std::vector<Vec3> directions;  // h_i, unit, fixed for the vertex's life
+    std::vector<double> outputs;   // w: N per vertex, vertex after vertex, in (0, 1]
+    int outputs_per_vertex = 0;    // N
+    int steps_done = 0;
+    // growth.mode "branching" (§5.8): 1 where the vertex grows, 0 where it is
+    // dormant; empty in the paper's mode.
+    std::vector<std::uint8_t> active;
+
+    double output(int vertex, int channel) const {
+        return outputs[static_cast<std::size_t>(vertex) * outputs_per_vertex + channel];
+    }
+};
+
+// Seconds spent in each phase (accumulated over calls).
+struct PhaseTimes {
+    double gather = 0, think = 0, move = 0, split = 0, flip = 0;
+    double collide = 0;  // growth.collisions "prevent" (§5.7): settling moves, guarding flips
+    std::uint64_t vertex_steps = 0;  // sum over steps of the vertices that thought
+    double total() const { return gather + think + move + split + flip + collide; }
+    PhaseTimes& operator+=(const PhaseTimes& o);
+};
+
+// Reusable per-thread buffers, so growing many genomes does not reallocate.
+struct GrowthWorkspace {
+    // Plain vectors: they keep their capacity as the mesh grows, so steps do
+    // not reallocate (and page-fault) fresh buffers.
+    std::vector<double> next_outputs;  // N per vertex
+    std::vector<int> neighbour_offsets, neighbours, cursor;  // CSR neighbour lists
+    std::vector<double> split_w1;                            // w[1] of each vertex
+    std::vector<Vec3> steered;                               // branching mode: new directions
+    NetworkWorkspace network;
+    // growth.collisions "prevent" only: positions before the move, the guard.
+    std::vector<Vec3> before_move;
+    CollisionGuard collision;
+};
+
+// Called after every step with the step index t; for tests and animation.
+using StepObserver = std::function<void(const GrowthState&, int step)>;
+
+class Grower {
+public:
+    // Throws ConfigError if the network does not fit (inputs != 3 * outputs, N < 3,
+    // or N < 7 in the branching mode).
+    Grower(const Network& network, const GrowthParams& params);
+
+    // The state before step 0: the seed with every output 0.5.
+    GrowthState start(const Seed& seed) const;
+    // One timestep t (docs/algorithm.md §5) applied to `state`.
+    void step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times = nullptr) const;
+    // start() then params.steps steps.
+    GrowthState grow(const Seed& seed, GrowthWorkspace& workspace, PhaseTimes* times = nullptr,
+                     const StepObserver& observer = {}) const;
+
+private:
+    // The neighbour lists (CSR) of the mesh as it stands.
+    void build_neighbours(const TriMesh& mesh, GrowthWorkspace& workspace) const;
+    // Gather (docs/algorithm.md §4.2) and network (§5.1): new outputs for every vertex. When
+    // timed, returns the gather's share of the time, estimated from a
+    // sample of its blocks (else 0).
+    double think(GrowthState& state, GrowthWorkspace& workspace, bool timed) const;
+    // Branching mode (§5.8): stop and start growth, turn the directions.
+    void branch(GrowthState& state, GrowthWorkspace& workspace) const;
+    void move(GrowthState& state) const;
+    // With a guard, every face a split writes is reported to it (§5.7).
+    void split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuard* guard) const;
+    void flip(GrowthState& state, FlipGuard* guard) const;
+
+    const Network& network_;
+    GrowthParams params_;
+    FlipCriteria flip_criteria_;
+};
+
+}  // namespace morphogen

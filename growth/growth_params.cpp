@@ -1,0 +1,58 @@
+#include "growth/growth_params.hpp"
+
+#include "growth/network.hpp"
+
+#include <limits>
+
+namespace morphogen {
+
+std::vector<int> NetworkParams::layers() const { return layer_sizes(outputs, hidden); }
+
+NetworkParams read_network_params(ObjectReader& reader) {
+    NetworkParams p;
+    p.outputs = static_cast<int>(reader.integer("outputs", p.outputs, 3, 1000));
+    const auto hidden = reader.integer_list("hidden", {p.hidden.begin(), p.hidden.end()}, 1, 10000);
+    p.hidden.assign(hidden.begin(), hidden.end());
+    reader.finish();
+    return p;
+}
+
+GrowthParams read_growth_params(ObjectReader& reader) {
+    constexpr double big = std::numeric_limits<double>::max();
+    GrowthParams p;
+    p.steps = static_cast<int>(reader.integer("steps", p.steps, 0, 1'000'000));
+    p.speed = reader.number("speed", p.speed, 0.0, big);
+    p.budget = reader.number("budget", p.budget, 0.0, big);
+    p.ground = reader.boolean("ground", p.ground);
+    p.split_area = reader.number("split_area", p.split_area, 0.0, big, /*min_exclusive=*/true);
+    p.max_vertices = static_cast<int>(reader.integer("max_vertices", p.max_vertices, 4, 10'000'000));
+    p.flip_every = static_cast<int>(reader.integer("flip_every", p.flip_every, 1, 1'000'000));
+    p.flip_max_angle_deg = reader.number("flip_max_angle_deg", p.flip_max_angle_deg, 0.0, 180.0);
+    p.min_valence = static_cast<int>(reader.integer("min_valence", p.min_valence, 3, 1000));
+    p.height_scale = reader.number("height_scale", p.height_scale, 0.0, big, /*min_exclusive=*/true);
+    p.seed_mesh = reader.string("seed_mesh", p.seed_mesh);
+    // Beyond these the seed's area-weighted normals (products of two
+    // coordinates) overflow or vanish; the mesh files' own bound is 1e9.
+    p.seed_radius = reader.number("seed_radius", p.seed_radius, kMinSeedRadius, kMaxSeedRadius);
+    p.collisions = reader.choice("collisions", "allow", {"allow", "prevent"}) == "prevent" ? Collisions::prevent
+                                                                                       : Collisions::allow;
+    // The default is not recorded: a config resolves to the same bytes as
+    // before the key existed, so checkpoints written then still resume.
+    if (p.collisions == Collisions::allow) reader.drop_resolved("collisions");
+    p.mode = reader.choice("mode", "paper", {"paper", "branching"}) == "branching" ? GrowthMode::branching
+                                                                               : GrowthMode::paper;
+    if (p.mode == GrowthMode::paper) {
+        // As for collisions: the paper's model resolves to the bytes it always
+        // had. A turn rate means nothing to it, so one given is a mistake.
+        reader.drop_resolved("mode");
+        if (reader.raw("turn_rate") != nullptr)
+            reader.issues().add(reader.path_of("turn_rate"), "is used only with growth.mode \"branching\"");
+    } else {
+        p.turn_rate = reader.number("turn_rate", p.turn_rate, 0.0, 1e6);
+    }
+    if (p.seed_mesh.empty()) reader.issues().add(reader.path_of("seed_mesh"), "must name a built-in seed or a mesh file");
+    reader.finish();
+    return p;
+}
+
+}  // namespace morphogen

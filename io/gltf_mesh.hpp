@@ -1,0 +1,47 @@
+#pragma once
+// glTF building blocks shared by the GLB mesh writer (mesh_io_glb.cpp) and the
+// growth animation (report/growth_animation.cpp): the plant material, meshes and
+// float arrays appended to one buffer, and the binary (.glb) encoding.
+// Meshes are stored Y-up (glTF's convention) as float32 positions with
+// min/max (the validator requires them), smooth normals and uint32 indices.
+#include "mesh/mesh.hpp"
+
+#include <tiny_gltf.h>
+
+#include <cstddef>
+#include <span>
+#include <string>
+
+namespace morphogen::gltf {
+
+// Our meshes are Z-up; glTF is Y-up, right-handed: (x, y, z) -> (x, z, -y) is
+// a proper rotation, so orientation (and outward normals) are kept.
+inline Vec3 to_y_up(const Vec3& p) { return {p.x(), p.z(), -p.y()}; }
+
+// An empty glTF 2.0 model whose asset names morphogen as its generator.
+tinygltf::Model new_model();
+
+// Makes node `root` the one scene of `model`, and that scene the default.
+void set_root_scene(tinygltf::Model& model, int root);
+
+// Adds the double-sided green material every morphogen glTF uses; returns its index.
+int add_plant_material(tinygltf::Model& model);
+
+// The bytes add_mesh appends to the buffer for `mesh`.
+std::size_t mesh_data_bytes(MeshView mesh);
+
+// Appends the mesh's positions, normals and indices to buffer 0 (created when
+// absent) and a glTF mesh `name` of one triangle primitive drawn with
+// `material`; returns the mesh's index. A mesh with no vertices or no faces
+// adds nothing and returns -1 (glTF accessors need count >= 1).
+int add_mesh(tinygltf::Model& model, MeshView mesh, int material, const std::string& name);
+
+// Appends `values` (count * components of `type`, e.g. TINYGLTF_TYPE_VEC3) to
+// buffer 0 as float32 and returns their accessor, with min/max (required for
+// animation inputs). For animation data: its buffer view has no target.
+int add_floats(tinygltf::Model& model, std::span<const float> values, int type);
+
+// The .glb bytes of `model`; IoError naming `path` if tinygltf cannot encode it.
+std::string glb_bytes(const tinygltf::Model& model, const std::string& path);
+
+}  // namespace morphogen::gltf

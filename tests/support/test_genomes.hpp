@@ -1,0 +1,16 @@
+#pragma once
+// Random genomes shared by the tests.
+#include "evolution/rng.hpp"
+#include "growth/network.hpp"
+
+#include <cstdint>
+#include <vector>
+
+namespace morphogen::testing {
+
+inline Genome random_test_genome(const std::vector<int>& layers, std::uint64_t seed, double range = 2.0) {
+    RandomStream stream(seed, 0);
+    return Genome{layers, random_parameters(parameter_count(layers), range, stream)};
+}
+
+}  // namespace morphogen::testing
