@@ -336,13 +336,22 @@ CliResult run_morphogen_peak(const fs::path& dir, const std::vector<std::string>
     std::string command = "python3 -c 'import resource, subprocess, sys; code = subprocess.call(sys.argv[1:]); "
                           "print(\"peak_kb\", resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss); sys.exit(code)' " +
                           q(MORPHOGEN_EXE);
-    for (const std::string& a : args) command += " " + q(a);
+    for (const std::string& a : args) {  // appended piece by piece: " " + q(a) trips GCC 12's false -Wrestrict
+        command += ' ';
+        command += q(a);
+    }
     const int status = std::system((command + " > " + q(dir / "peak.txt") + " 2>&1").c_str());
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read_text(dir / "peak.txt")};
 }
 }  // namespace
 
 TEST_CASE("the memory estimate bounds the peak of a run with a large lag, exporting or not", "[limits][cli]") {
+#if defined(__SANITIZE_ADDRESS__)
+    // AddressSanitizer's shadow memory and quarantine are no part of what the
+    // estimate bounds; the optimised build's pass of this test checks it.
+    WARN("skipped under AddressSanitizer: peaks include its shadow memory");
+    return;
+#endif
     // Births in flight dominate: 4,000 of them, each copied into the
     // evaluator's queue, and (exporting) each keeping its mesh's files while
     // it ties the best (no plant reaches height 10 here: all score 0 and do).
