@@ -8,6 +8,7 @@
 #include "run/archive_csv.hpp"
 #include "run/stop_signals.hpp"
 
+#include <algorithm>
 #include <stdexcept>
 
 namespace morphogen {
@@ -59,11 +60,8 @@ std::optional<MapElitesState> initial_elites_state(const ExperimentConfig& c, in
     // One not-yet-started state per emitter when any is a CMA emitter, as
     // MapElites makes them: the checkpoint written before the first birth
     // must hold what resume asks of every later one.
-    for (const EmitterSpec& e : c.qd.emitters)
-        if (is_cma(e.kind)) {
-            state.emitters.resize(c.qd.emitters.size());
-            break;
-        }
+    if (std::any_of(c.qd.emitters.begin(), c.qd.emitters.end(), [](const EmitterSpec& e) { return is_cma(e.kind); }))
+        state.emitters.resize(c.qd.emitters.size());
     return state;
 }
 
