@@ -14,8 +14,12 @@
 // upper bound on an emitter's own cost per birth).
 #include "bench/pyribs_cma.hpp"
 #include "bench/sphere_projection.hpp"
+#include "evolution/cma_emitter.hpp"
+#include "evolution/gaussian_emitter.hpp"
+#include "evolution/iso_line_emitter.hpp"
 #include "evolution/map_elites.hpp"
 #include "evolution/sep_cma.hpp"
+#include "evolution/thread_evaluator.hpp"
 
 #include <CLI/CLI.hpp>
 #include <unistd.h>
@@ -59,26 +63,22 @@ MapElitesParams params_for(const std::string& algorithm, const std::string& cova
     p.mutation_rate = 1.0;  // pyribs' GaussianEmitter steps every parameter
     p.mutation_sigma = 0.5;
     p.init_range = init_range;
-    EmitterSpec e;
     if (algorithm == "map_elites") {
-        p.emitters = {e};
+        p.emitters = {{1.0, std::make_shared<GaussianEmitter>()}};
     } else if (algorithm == "line") {
-        e.kind = EmitterKind::iso_line;
-        e.sigma_iso = 0.5;
-        e.sigma_line = 0.2;
-        p.emitters = {e};
+        p.emitters = {{1.0, std::make_shared<IsoLineEmitter>(ParentSelection::uniform, IsoLineSettings{0.5, 0.2})}};
     } else if (algorithm == "cma_me" || algorithm == "cma_mae" || algorithm == "cma_me_imp") {
-        e.kind = algorithm == "cma_mae" ? EmitterKind::cma_mae : EmitterKind::cma_me;
-        e.sigma0 = 0.5;
+        CmaSettings s;
+        s.ranking = algorithm == "cma_mae" ? CmaRanking::threshold : CmaRanking::improvement;
+        s.sigma0 = 0.5;
         // cma_me_imp: filter and no_improvement, the original CMA-ME (our cma_me's defaults).
         const bool original = algorithm == "cma_me_imp";
-        e.parents = original ? CmaParents::filter : CmaParents::mu;
-        e.restart = original ? CmaRestart::no_improvement : CmaRestart::basic;
-        e.learning_rate = 0.01;
-        e.threshold_min = 0.0;
-        e.covariance = covariance == "diagonal" ? CmaCovariance::diagonal : CmaCovariance::full;
-        if (covariance == "pyribs") e.full_update = pyribs_full_update();
-        p.emitters.assign(kCmaEmitters, e);
+        s.parents = original ? CmaParents::filter : CmaParents::mu;
+        s.restart = original ? CmaRestart::no_improvement : CmaRestart::basic;
+        s.thresholds = {0.01, 0.0};
+        s.covariance = covariance == "diagonal" ? CmaCovariance::diagonal : CmaCovariance::full;
+        if (covariance == "pyribs") s.full_update = pyribs_full_update();
+        p.emitters.assign(kCmaEmitters, {1.0, std::make_shared<CmaEmitter>(ParentSelection::uniform, s)});
     } else {
         throw std::invalid_argument("unknown algorithm " + algorithm);
     }
@@ -96,8 +96,11 @@ QdRun run_one(const std::string& algorithm, const BenchQdOptions& o, std::uint64
     const double cells = static_cast<double>(archive.cells());
     MapElites me(params_for(algorithm, o.covariance, o.init_range), seed, problem, MapElitesState{0, std::move(archive), {}, 0, 0});
     const auto start = std::chrono::steady_clock::now();
-    const std::uint64_t target = o.iterations * kPerIteration;
-    while (me.state().births < target) me.step(1);
+    // The batch schedule of one iteration, one thread: the papers' ask/tell loop.
+    ThreadEvaluator evaluator(problem, 1);
+    BirthPipeline pipeline(BirthSchedule{ScheduleKind::batch, kPerIteration, kPerIteration}, me, evaluator);
+    pipeline.run(o.iterations * kPerIteration, [](const Individual&, const std::string&, const Inserted&, const std::string&) {},
+                 [] { return false; });
     QdRun run;
     run.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     run.births = me.state().births;
@@ -106,7 +109,8 @@ QdRun run_one(const std::string& algorithm, const BenchQdOptions& o, std::uint64
     run.qd_score = sum / cells;
     run.coverage = 100.0 * static_cast<double>(me.state().archive.occupied()) / cells;
     run.best = me.state().best ? me.state().best->fitness : 0.0;
-    for (const CmaEmitterState& e : me.state().emitters) run.restarts += e.restarts;
+    for (const EmitterSlot& e : me.state().emitters)
+        if (const auto* cma = dynamic_cast<const CmaEmitter*>(e.get())) run.restarts += cma->state().restarts;
     return run;
 }
 

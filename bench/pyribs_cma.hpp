@@ -25,9 +25,9 @@ namespace morphogen {
 void pyribs_cma_update(FullCmaState& state, std::uint64_t& decomposed_at,
                        std::span<const std::vector<double>* const> parents_best_first, std::size_t lambda);
 
-// An EmitterSpec::full_update running pyribs_cma_update, keeping each
+// A CmaSettings::full_update running pyribs_cma_update, keeping each
 // emitter state's decomposed_at beside it (by the state's address, which
-// MapElites keeps for a run; a restart, updates back to 0, starts it again).
+// a run's emitter keeps; a restart, updates back to 0, starts it again).
 FullCmaUpdate pyribs_full_update();
 
 }  // namespace morphogen

@@ -97,15 +97,40 @@ std::vector<std::uint64_t> Archive::bins_of(std::span<const double> x) const {
     return bins;
 }
 
-Archive::Placement Archive::insert(const Individual& child) {
-    if (!child.valid()) return Placement::rejected;
-    const std::optional<std::uint64_t> cell = cell_of(child.descriptors);
-    if (!cell) return Placement::rejected;
-    auto [it, fresh] = elites_.try_emplace(*cell, child);
-    if (fresh) return Placement::filled;
-    if (!(child.fitness >= it->second.fitness)) return Placement::rejected;
+Archive::Insertion Archive::insert(const Individual& child) {
+    Insertion out;
+    if (!child.valid()) return out;
+    out.cell = cell_of(child.descriptors);
+    if (!out.cell) return out;
+    if (threshold_params_) {
+        const auto t = thresholds_.find(*out.cell);
+        out.threshold = t == thresholds_.end() ? threshold_params_->threshold_min : t->second;
+        const double rate = threshold_params_->learning_rate;
+        if (child.fitness > out.threshold) thresholds_[*out.cell] = (1.0 - rate) * out.threshold + rate * child.fitness;
+    }
+    auto [it, fresh] = elites_.try_emplace(*out.cell, child);
+    if (fresh) {
+        out.placement = Placement::filled;
+        return out;
+    }
+    out.elite_fitness = it->second.fitness;
+    if (!(child.fitness >= it->second.fitness)) return out;
     it->second = child;
-    return Placement::replaced;
+    out.placement = Placement::replaced;
+    return out;
+}
+
+void Archive::keep_thresholds(ThresholdParams params) {
+    if (!(params.learning_rate >= 0.0 && params.learning_rate <= 1.0) || !std::isfinite(params.threshold_min))
+        refuse("thresholds need a learning rate in [0, 1] and a finite threshold_min");
+    if (threshold_params_ && *threshold_params_ != params)
+        refuse("the archive keeps thresholds with another learning_rate or threshold_min");
+    threshold_params_ = params;
+}
+
+void Archive::restore_threshold(std::uint64_t cell, double threshold) {
+    if (!threshold_params_) throw std::logic_error("restore_threshold: the archive keeps no thresholds");
+    thresholds_[cell] = threshold;
 }
 
 void Archive::restore(std::uint64_t cell, Individual elite) {

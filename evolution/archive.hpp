@@ -13,6 +13,11 @@
 // In both, values outside [min, max] land in the edge cells. A non-finite
 // descriptor, or a wrong number of them, places nowhere. Nothing here knows
 // what the descriptors measure.
+//
+// An archive may also keep thresholds (CMA-MAE's annealing, §9.9, as in
+// pyribs' archives): every cell has one, threshold_min until a child beats
+// it, then moved toward each child that beats it by the learning rate. They
+// never decide who enters a cell; emitters rank their children by them.
 #include "evolution/individual.hpp"
 
 #include <cstdint>
@@ -35,6 +40,15 @@ struct DescriptorRange {
 inline constexpr std::uint64_t kMaxGridCells = std::uint64_t{1} << 40;
 
 enum class ArchiveKind { grid, cvt };
+
+// The thresholds' rule (docs/algorithm.md §9.9): a valid child of fitness f
+// in a cell of threshold t moves it to (1 - learning_rate) t +
+// learning_rate f when f > t.
+struct ThresholdParams {
+    double learning_rate = 0.01;  // alpha, in [0, 1]
+    double threshold_min = 0.0;   // the threshold of a cell no child has beaten yet
+    bool operator==(const ThresholdParams&) const = default;
+};
 
 class Archive {
 public:
@@ -63,14 +77,34 @@ public:
     std::vector<std::uint64_t> bins_of(std::span<const double> descriptors) const;
 
     enum class Placement { rejected, filled, replaced };
+    // What inserting a child did, and what its cell held before: what an
+    // emitter ranks the child by (emitters.hpp).
+    struct Insertion {
+        Placement placement = Placement::rejected;
+        std::optional<std::uint64_t> cell;         // none if invalid or unplaceable
+        std::optional<double> elite_fitness;       // the cell's elite's fitness before, if any
+        double threshold = 0.0;                    // the cell's threshold before (with thresholds kept)
+    };
     // docs/algorithm.md §9.5: a valid child that has a cell enters it if the cell is
     // empty (filled) or its fitness is >= the elite's (replaced: on equal
-    // fitness the newcomer wins). Otherwise, or if invalid, rejected.
-    Placement insert(const Individual& child);
+    // fitness the newcomer wins). Otherwise, or if invalid, rejected. With
+    // thresholds kept, a valid child with a cell also moves its cell's
+    // threshold when it beats it.
+    Insertion insert(const Individual& child);
     // Puts `elite` in `cell` as a checkpoint stored it. Throws
     // std::invalid_argument if the cell is out of range or taken, the elite is
     // invalid, or its descriptors do not map to `cell`.
     void restore(std::uint64_t cell, Individual elite);
+
+    // Keeps thresholds from now on. Throws std::invalid_argument if it keeps
+    // them already with other parameters, or for a learning rate outside [0, 1].
+    void keep_thresholds(ThresholdParams params);
+    const std::optional<ThresholdParams>& threshold_params() const { return threshold_params_; }
+    // The cells whose threshold rose above threshold_min, and that threshold.
+    const std::map<std::uint64_t, double>& thresholds() const { return thresholds_; }
+    // Sets a cell's threshold as a checkpoint stored it (the caller checks it).
+    // Throws std::logic_error when no thresholds are kept.
+    void restore_threshold(std::uint64_t cell, double threshold);
 
     // Occupied cells in index order.
     const std::map<std::uint64_t, Individual>& elites() const { return elites_; }
@@ -87,6 +121,8 @@ private:
     std::uint64_t cells_;
     std::vector<double> centroids_;
     std::map<std::uint64_t, Individual> elites_;
+    std::optional<ThresholdParams> threshold_params_;
+    std::map<std::uint64_t, double> thresholds_;
 };
 
 // Bytes the archive's genomes need when every cell is occupied, cells x

@@ -1,12 +1,9 @@
 #include "evolution/batch.hpp"
 
-#include "evolution/pipeline.hpp"
-
 #include <omp.h>
 
 #include <cmath>
 #include <exception>
-#include <stdexcept>
 #include <string>
 
 namespace morphogen {
@@ -49,30 +46,5 @@ Evaluation evaluate_safely(const Problem& problem, std::span<const double> param
 }
 
 int resolve_thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
-
-BredBatch breed_batch(Problem& problem, std::uint64_t first, std::size_t count, int threads,
-                      const std::function<Individual(std::uint64_t birth)>& conceive) {
-    threads = resolve_thread_count(threads);
-    problem.prepare(threads);
-    BredBatch out;
-    out.children.resize(count);
-    out.errors.resize(count);
-    std::exception_ptr failure;
-
-#pragma omp parallel for schedule(dynamic) num_threads(threads)
-    for (std::size_t i = 0; i < count; ++i) {
-        try {
-            Individual child = conceive(first + i);
-            Evaluation e = evaluate_safely(problem, child.params, omp_get_thread_num());
-            take_evaluation(child, out.errors[i], std::move(e));
-            out.children[i] = std::move(child);
-        } catch (...) {
-#pragma omp critical(morphogen_batch_failure)
-            if (!failure) failure = std::current_exception();
-        }
-    }
-    if (failure) std::rethrow_exception(failure);
-    return out;
-}
 
 }  // namespace morphogen

@@ -1,14 +1,10 @@
 #pragma once
-// The batch step both algorithms share (docs/algorithm.md §8.4, batch schedule): the children of a
-// run of consecutive births are conceived from a frozen snapshot and evaluated
-// in parallel (OpenMP, dynamic schedule); the caller then inserts them in
-// birth order. Each child depends only on (snapshot, seed, birth index), so
-// the result is the same for every thread count.
+// What both searches share between a genome's evaluation and its insertion:
+// scoring safely, keeping the best, and the thread count of a run.
 #include "evolution/individual.hpp"
 #include "evolution/problem.hpp"
 
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -24,28 +20,13 @@ namespace morphogen {
 Evaluation evaluate_safely(const Problem& problem, std::span<const double> params, int worker,
                            double keep_from = std::numeric_limits<double>::infinity()) noexcept;
 
-struct BredBatch {
-    std::vector<Individual> children;  // in birth order; fitness, size and descriptors filled in
-    std::vector<std::string> errors;   // parallel to children: why it is invalid ("" if valid)
-};
-
-// Births [first, first + count): conceive(birth) makes each child (it must
-// only read state that stays unchanged during the call, and may run on any
-// thread), then the problem scores it with worker = the OpenMP thread number.
-// Calls problem.prepare(threads) first; threads <= 0 means OpenMP's default.
-// Failures outside evaluation (e.g. std::bad_alloc while conceiving) are
-// rethrown after the parallel region. Runs use BirthPipeline (pipeline.hpp);
-// this is the batch schedule's step for tests and tools.
-BredBatch breed_batch(Problem& problem, std::uint64_t first, std::size_t count, int threads,
-                      const std::function<Individual(std::uint64_t birth)>& conceive);
-
 // Replaces `best` by `child` if the child is valid and strictly fitter (so the
 // earliest of equally fit individuals stays).
 inline void keep_best(std::optional<Individual>& best, const Individual& child) {
     if (child.valid() && (!best || child.fitness > best->fitness)) best = child;
 }
 
-// The thread count breed_batch uses for `threads`.
+// `threads`, or the machine's (OpenMP's default) for threads <= 0.
 int resolve_thread_count(int threads);
 
 }  // namespace morphogen

@@ -60,30 +60,38 @@ const Individual& ParentPool::pick(ParentSelection selection, RandomStream& stre
     return *elites_[index];
 }
 
-Individual emit(const EmitterSpec& emitter, const BirthRules& rules, std::span<const Block> blocks,
-                std::size_t dimension, std::uint64_t seed, std::uint64_t birth, const ParentPool& pool) {
-    if (emitter.kind != EmitterKind::gaussian && emitter.kind != EmitterKind::iso_line)
-        throw std::logic_error("emit() is for the stateless emitters");
-    ParentPicker pick;
-    if (!pool.empty()) {
-        pick = [&pool, selection = emitter.selection](RandomStream& stream) -> const Individual& {
-            return pool.pick(selection, stream);
-        };
+ParentPicker ParentPool::picker(ParentSelection selection) const {
+    if (empty()) return {};
+    return [this, selection](RandomStream& stream) -> const Individual& { return pick(selection, stream); };
+}
+
+void Emitter::state_from_json(const nlohmann::json& entry, const EmitterStateShape&, const std::string& path,
+                              GenomeBlobReader*) {
+    if (!entry.is_null()) throw std::invalid_argument(path + ": a stateless emitter's entry must be null");
+}
+
+std::vector<EmitterSlot> fresh_emitters(std::span<const EmitterSpec> specs) {
+    std::vector<EmitterSlot> out;
+    out.reserve(specs.size());
+    for (const EmitterSpec& spec : specs) {
+        if (!spec.emitter) throw std::invalid_argument("an emitter spec without an emitter");
+        out.emplace_back(spec.emitter->clone());
     }
-    if (emitter.kind == EmitterKind::gaussian || birth < rules.population || pool.empty())
-        return conceive_birth(rules, blocks, dimension, seed, birth, pick);
-    RandomStream stream(seed, birth);
-    const Individual& x = pick(stream);
-    const Individual& y = pick(stream);
-    Individual child;
-    child.id = birth;
-    child.parent1 = x.id;
-    child.parent2 = y.id;
-    const double along = emitter.sigma_line * stream.normal();
-    child.params.resize(x.params.size());
-    for (std::size_t i = 0; i < x.params.size(); ++i)
-        child.params[i] = x.params[i] + emitter.sigma_iso * stream.normal() + along * (y.params[i] - x.params[i]);
-    return child;
+    return out;
+}
+
+std::optional<ThresholdParams> archive_thresholds(std::span<const EmitterSpec> specs) {
+    std::optional<ThresholdParams> out;
+    for (std::size_t k = 0; k < specs.size(); ++k) {
+        const std::optional<ThresholdParams> own = specs[k].emitter ? specs[k].emitter->thresholds() : std::nullopt;
+        if (!own) continue;
+        if (out && *out != *own)
+            throw std::invalid_argument("emitter " + std::to_string(k) +
+                                        ": every cma_mae emitter must have the same learning_rate and threshold_min "
+                                        "(they share one threshold archive)");
+        out = own;
+    }
+    return out;
 }
 
 }  // namespace morphogen

@@ -1,5 +1,6 @@
 #include "evolution/map_elites_state_json.hpp"
 
+#include "evolution/emitter_registry.hpp"
 #include "evolution/emitter_state_json.hpp"
 #include "evolution/ga_state_json.hpp"
 #include "evolution/state_json_read.hpp"
@@ -37,7 +38,8 @@ json map_elites_state_to_json(const MapElitesState& state, GenomeBlobWriter* gen
         json row = individual_to_json(elite, genomes);
         row["cell"] = cell;
         row["descriptors"] = elite.descriptors;
-        if (const auto t = state.thresholds.find(cell); t != state.thresholds.end()) row["threshold"] = t->second;
+        const auto& thresholds = state.archive.thresholds();
+        if (const auto t = thresholds.find(cell); t != thresholds.end()) row["threshold"] = t->second;
         elites.push_back(std::move(row));
     }
     archive["elites"] = std::move(elites);
@@ -48,7 +50,7 @@ json map_elites_state_to_json(const MapElitesState& state, GenomeBlobWriter* gen
     out["best"] = state.best ? individual_to_json(*state.best, genomes) : json(nullptr);
     if (state.best) out["best"]["descriptors"] = state.best->descriptors;
     out["archive"] = std::move(archive);
-    if (!state.emitters.empty()) out["emitters"] = emitter_states_to_json(state.emitters, genomes);
+    if (keeps_emitter_states(state.emitters)) out["emitters"] = emitter_states_to_json(state.emitters, genomes);
     return out;
 }
 
@@ -58,13 +60,9 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
                                           std::span<const EmitterSpec> emitters, GenomeBlobReader* genomes) {
     const std::string root = "map_elites";
     const std::vector<EmitterSpec> specs =
-        emitters.empty() ? std::vector<EmitterSpec>{EmitterSpec{}} : std::vector<EmitterSpec>(emitters.begin(), emitters.end());
-    const EmitterSpec* annealing = nullptr;
-    bool has_cma = false;
-    for (const EmitterSpec& e : specs) {
-        has_cma = has_cma || is_cma(e.kind);
-        if (e.kind == EmitterKind::cma_mae) annealing = &e;
-    }
+        emitters.empty() ? default_emitters() : std::vector<EmitterSpec>(emitters.begin(), emitters.end());
+    const std::optional<ThresholdParams> annealing = archive_thresholds(specs);
+    const bool lists_emitters = std::any_of(specs.begin(), specs.end(), [](const EmitterSpec& e) { return e.emitter->keeps_state(); });
     const std::uint64_t births = read_u64(member(document, "births", root), root + ".births");
     const std::uint64_t invalid =
         read_u64(member(document, "invalid_in_generation", root), root + ".invalid_in_generation");
@@ -100,6 +98,7 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
         fail(root + ".archive", what);
     }
     MapElitesState state{births, std::move(*built), std::nullopt, invalid, new_cells};
+    if (annealing) state.archive.keep_thresholds(*annealing);
     if (archive.size() != (kind == ArchiveKind::cvt ? 3u : 2u)) fail(root + ".archive", "unexpected keys");
 
     const json& elites = member(archive, "elites", root + ".archive");
@@ -120,7 +119,6 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
                 fail(path + ".threshold", "not above threshold_min (such cells are not stored)");
             if (threshold > elite.fitness && threshold - elite.fitness > 1e-12 * std::max(1.0, std::fabs(elite.fitness)))
                 fail(path + ".threshold", "above its elite's fitness");
-            state.thresholds.emplace(cell, threshold);
         }
         if (!elite.valid()) fail(path, "an elite must be valid");
         if (elite.id >= state.births) fail(path + ".id", "not below the birth counter");
@@ -132,6 +130,7 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
         } catch (const std::invalid_argument& e) {
             fail(path, e.what());
         }
+        if (has_threshold) state.archive.restore_threshold(cell, elites[i]["threshold"].get<double>());
     }
     const json& best = member(document, "best", root);
     if (!best.is_null()) {
@@ -145,12 +144,13 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
     } else if (state.archive.occupied() > 0) {
         fail(root + ".best", "null though the archive holds elites");
     }
-    if (has_cma) {
-        const std::vector<std::uint64_t> per_generation = births_per_generation(specs, population);
-        const EmitterStateShape shape{specs, per_generation, population, births, dimension};
+    if (lists_emitters) {
+        const EmitterListShape shape{specs, population, births, dimension};
         state.emitters = emitter_states_from_json(member(document, "emitters", root), shape, root + ".emitters", genomes);
+    } else {
+        state.emitters = fresh_emitters(specs);
     }
-    if (document.size() != (has_cma ? 6u : 5u)) fail(root, "unexpected keys");
+    if (document.size() != (lists_emitters ? 6u : 5u)) fail(root, "unexpected keys");
     if (genomes) genomes->check_all_taken(root);
     return state;
 }

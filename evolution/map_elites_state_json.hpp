@@ -5,7 +5,8 @@
 //    "archive": {"type": "grid" | "cvt", "centroids": [...] (cvt only, row-major),
 //                "elites": [{"cell": c, "descriptors": [...], <individual>,
 //                            "threshold": t (cma_mae runs, cells whose threshold rose)}, ...] (cell order)},
-//    "emitters": [...] (runs with a CMA emitter: emitter_state_json.hpp)}
+//    "emitters": [...] (runs with an emitter that keeps a state, such as a
+//                       CMA emitter: emitter_state_json.hpp)}
 // The CVT centroids are stored so a resume never recomputes them. Genomes:
 // inline or in a blob, as in ga_state_json.hpp.
 #include "evolution/genome_blob.hpp"
@@ -29,7 +30,7 @@ nlohmann::json map_elites_state_to_json(const MapElitesState& state, GenomeBlobW
 // elite; with `genomes`, every genome of the blob belongs to exactly one
 // individual; with CMA emitters, their states (emitter_state_json.hpp) and
 // every threshold above the cma_mae emitters' threshold_min and at most its
-// elite's fitness. `emitters`: the config's (empty: the default gaussian).
+// elite's fitness. `emitters`: the config's (empty: default_emitters()).
 // Throws std::invalid_argument naming the first defect ("map_elites.…").
 MapElitesState map_elites_state_from_json(const nlohmann::json& document, ArchiveKind kind,
                                           const std::vector<DescriptorRange>& ranges, std::uint64_t cells,

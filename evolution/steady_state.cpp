@@ -33,7 +33,7 @@ Inserted SteadyStateGA::insert(Individual& child, std::string&) {
     Inserted what;
     if (!child.valid()) ++state_.invalid_in_generation;
     keep_best(state_.best, child);
-    last_inserted_ = insert_child(state_.population, child, static_cast<std::size_t>(params_.population));
+    (void)insert_child(state_.population, child, static_cast<std::size_t>(params_.population));
     ++state_.births;
     if (at_generation_end()) {
         what.ends_generation = true;
@@ -48,23 +48,6 @@ double SteadyStateGA::export_floor() const {
     for (const Individual& member : state_.population)
         if (member.valid()) floor = std::max(floor, member.fitness);
     return floor;
-}
-
-BatchOutcome SteadyStateGA::step(int threads) {
-    const std::size_t count = batch_size(state_.births, params_);
-    BredBatch bred = breed_batch(problem_, state_.births, count, threads,
-                                 [&](std::uint64_t birth) { return conceive(birth); });
-    BatchOutcome out;
-    out.children = std::move(bred.children);
-    out.errors = std::move(bred.errors);
-    out.inserted.resize(count);
-    for (std::size_t i = 0; i < count; ++i) {
-        const Inserted what = insert(out.children[i], out.errors[i]);
-        out.inserted[i] = last_inserted_;
-        out.ends_generation = what.ends_generation;
-        out.generation_invalid = what.generation_invalid;
-    }
-    return out;
 }
 
 }  // namespace morphogen

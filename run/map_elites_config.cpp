@@ -1,7 +1,7 @@
 #include "run/map_elites_config.hpp"
 
-#include "evolution/cma_emitter.hpp"
 #include "evolution/cvt.hpp"
+#include "evolution/emitter_registry.hpp"
 #include "fitness/descriptors.hpp"
 
 #include <cmath>
@@ -68,82 +68,6 @@ const char* algorithm_name(Algorithm algorithm) {
     return algorithm == Algorithm::map_elites ? "map_elites" : "steady_state";
 }
 
-namespace {
-// `emitters`: a non-empty list of emitter objects (emitters.hpp).
-std::vector<EmitterSpec> read_emitters(const json& list, ObjectReader& top, ConfigIssues& issues) {
-    std::vector<EmitterSpec> out;
-    if (!list.is_array() || list.empty()) {
-        issues.add("emitters", "expected a non-empty array of {\"kind\": \"gaussian\", \"iso_line\", \"cma_me\" or \"cma_mae\", \"share\", "
-                               "\"selection\", ...} objects, got " + list.dump());
-        return out;
-    }
-    json resolved = json::array();
-    std::optional<EmitterSpec> annealing_spec;
-    for (std::size_t i = 0; i < list.size(); ++i) {
-        ObjectReader r(&list[i], "emitters[" + std::to_string(i) + "]", issues);
-        EmitterSpec e;
-        const std::string kind = r.choice("kind", "gaussian", {"gaussian", "iso_line", "cma_me", "cma_mae"});
-        e.kind = kind == "iso_line" ? EmitterKind::iso_line
-                 : kind == "cma_me" ? EmitterKind::cma_me
-                 : kind == "cma_mae" ? EmitterKind::cma_mae
-                                     : EmitterKind::gaussian;
-        e.share = r.number("share", 1.0, 0.0, 1e6, /*min_exclusive=*/true);
-        e.selection = r.choice("selection", "uniform", {"uniform", "fitness_proportional"}) == "fitness_proportional"
-                          ? ParentSelection::fitness_proportional
-                          : ParentSelection::uniform;
-        if (e.kind == EmitterKind::iso_line) {
-            e.sigma_iso = r.number("sigma_iso", e.sigma_iso, 0.0, 1000.0);
-            e.sigma_line = r.number("sigma_line", e.sigma_line, 0.0, 1000.0);
-        } else {
-            for (const char* key : {"sigma_iso", "sigma_line"})
-                if (r.raw(key) != nullptr) issues.add(r.path_of(key), "only for kind \"iso_line\"");
-        }
-        const bool cma = is_cma(e.kind), annealing = e.kind == EmitterKind::cma_mae;
-        if (cma) {
-            e.sigma0 = r.number("sigma0", e.sigma0, 0.0, 1000.0, /*min_exclusive=*/true);
-            e.parents = r.choice("parents", annealing ? "mu" : "filter", {"filter", "mu"}) == "mu" ? CmaParents::mu
-                                                                                                  : CmaParents::filter;
-            e.restart = r.choice("restart", annealing ? "basic" : "no_improvement", {"no_improvement", "basic"}) == "basic"
-                            ? CmaRestart::basic
-                            : CmaRestart::no_improvement;
-            e.covariance = r.choice("covariance", "diagonal", {"diagonal", "full"}) == "full" ? CmaCovariance::full
-                                                                                              : CmaCovariance::diagonal;
-        } else {
-            for (const char* key : {"sigma0", "parents", "restart", "covariance"})
-                if (r.raw(key) != nullptr) issues.add(r.path_of(key), "only for kinds \"cma_me\" and \"cma_mae\"");
-        }
-        if (annealing) {
-            e.learning_rate = r.number("learning_rate", e.learning_rate, 0.0, 1.0);
-            e.threshold_min = r.number("threshold_min", e.threshold_min, -1e12, 1e12);
-            if (annealing_spec && (annealing_spec->learning_rate != e.learning_rate ||
-                                   annealing_spec->threshold_min != e.threshold_min))
-                issues.add(r.path_of("learning_rate"), "every cma_mae emitter must have the same learning_rate and "
-                                                       "threshold_min (they share one threshold archive)");
-            if (!annealing_spec) annealing_spec = e;
-        } else {
-            for (const char* key : {"learning_rate", "threshold_min"})
-                if (r.raw(key) != nullptr) issues.add(r.path_of(key), "only for kind \"cma_mae\"");
-        }
-        r.finish();
-        json item = r.resolved();
-        if (e.kind != EmitterKind::iso_line) {
-            item.erase("sigma_iso");
-            item.erase("sigma_line");
-        }
-        if (!cma)
-            for (const char* key : {"sigma0", "parents", "restart"}) item.erase(key);
-        // The default model is left out, so runs begun before the key resume.
-        if (e.covariance == CmaCovariance::diagonal) item.erase("covariance");
-        if (!annealing)
-            for (const char* key : {"learning_rate", "threshold_min"}) item.erase(key);
-        resolved.push_back(std::move(item));
-        out.push_back(e);
-    }
-    top.set_resolved("emitters", resolved);
-    return out;
-}
-}  // namespace
-
 QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
     ConfigIssues& issues = top.issues();
     QdParams qd;
@@ -153,10 +77,13 @@ QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
     if (ga && archive != nullptr) issues.add("archive", "used only when evolution.algorithm is \"map_elites\"");
     const json* emitters = top.raw("emitters");
     if (ga && emitters != nullptr) issues.add("emitters", "used only when evolution.algorithm is \"map_elites\"");
-    if (!ga && emitters != nullptr) qd.emitters = read_emitters(*emitters, top, issues);
+    if (!ga) {
+        json resolved_emitters;
+        qd.emitters = read_emitters(emitters != nullptr ? *emitters : default_emitters_config(), issues, resolved_emitters);
+        top.set_resolved("emitters", std::move(resolved_emitters));
+    }
     // A steady-state run may declare descriptors only to record them in
-    // lineage.csv (to bin a GA run into a MAP-Elites grid afterwards); without
-    // them it resolves to the same bytes as before they existed.
+    // lineage.csv (to bin a GA run into a MAP-Elites grid afterwards).
     if (ga && descriptors == nullptr) return qd;
 
     // descriptors: a non-empty array of {measure, min, max, bins}
@@ -195,9 +122,7 @@ QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
     }
     qd.qd_offset = reader.number("qd_offset", 0.0, -1e12, 1e12);
     reader.finish();
-    json resolved_archive = reader.resolved();
-    if (qd.archive == ArchiveKind::grid) resolved_archive.erase("cells");
-    top.set_resolved("archive", resolved_archive);
+    top.set_resolved("archive", reader.resolved());
 
     if (qd.descriptors.empty()) return qd;
     if (qd.archive == ArchiveKind::grid) {

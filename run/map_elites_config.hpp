@@ -1,10 +1,9 @@
 #pragma once
 // The config keys of MAP-Elites runs (docs/algorithm.md §9, docs/map-elites.md):
-// `evolution.algorithm`, the top-level `descriptors` list and `archive`
-// section. They appear in the resolved config only when the algorithm is
-// "map_elites" (and `descriptors` when a steady-state config gives it), so a
-// steady-state config without them resolves to the same bytes as before they
-// existed (its config.json and checkpoints are unchanged).
+// `evolution.algorithm`, the top-level `descriptors` list, `archive` section
+// and `emitters` list. They appear in the resolved config, every default
+// written out, when the algorithm is "map_elites" (and `descriptors` when a
+// steady-state config gives it); they do not apply to a steady-state run.
 #include "base/config_reader.hpp"
 #include "evolution/archive.hpp"
 #include "evolution/emitters.hpp"
@@ -22,7 +21,7 @@ struct QdParams {
     ArchiveKind archive = ArchiveKind::grid;
     std::uint64_t cvt_cells = 1000;            // archive.cells, CVT only
     double qd_offset = 0.0;                    // archive.qd_offset: QD-score sums fitness - offset
-    std::vector<EmitterSpec> emitters;         // `emitters`; empty: one gaussian emitter, uniform selection
+    std::vector<EmitterSpec> emitters;         // `emitters` (emitter_registry.hpp); map_elites only
 
     std::vector<std::string> measure_names() const;
     // Cells of the archive: the product of the bins (grid) or cvt_cells.

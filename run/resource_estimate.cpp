@@ -408,7 +408,7 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
         double full_matrices = 0;
         if (elites)
             for (const EmitterSpec& emitter : config.qd.emitters)
-                full_matrices += is_cma(emitter.kind) && emitter.covariance == CmaCovariance::full ? 1 : 0;
+                full_matrices += static_cast<double>(emitter.emitter->square_matrices());
         if (full_matrices > 0)
             e.memory.push_back({group(full_matrices) + " full covariance matrices of " + group(D) + " x " + group(D) +
                                     " (C, its eigenvectors, the solver's and the update's copies)",

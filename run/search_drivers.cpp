@@ -1,7 +1,6 @@
 #include "run/search_drivers.hpp"
 
 #include "evolution/archive_stats.hpp"
-#include "evolution/cma_emitter.hpp"
 #include "evolution/cvt.hpp"
 #include "evolution/operators.hpp"
 #include "evolution/population_stats.hpp"
@@ -57,11 +56,9 @@ std::optional<MapElitesState> initial_elites_state(const ExperimentConfig& c, in
         archive.emplace(Archive::cvt(c.qd.descriptors, std::move(centroids)));
     }
     MapElitesState state{0, std::move(*archive), {}, 0, 0};
-    // One not-yet-started state per emitter when any is a CMA emitter, as
-    // MapElites makes them: the checkpoint written before the first birth
-    // must hold what resume asks of every later one.
-    if (std::any_of(c.qd.emitters.begin(), c.qd.emitters.end(), [](const EmitterSpec& e) { return is_cma(e.kind); }))
-        state.emitters.resize(c.qd.emitters.size());
+    // Fresh emitters, as MapElites makes them: the checkpoint written before
+    // the first birth must hold what resume asks of every later one.
+    state.emitters = fresh_emitters(c.qd.emitters);
     return state;
 }
 

@@ -88,23 +88,58 @@ TEST_CASE("bad archive shapes are refused", "[evolution][archive]") {
 TEST_CASE("insertion: empty cell, better, equal (the newcomer wins), worse, invalid", "[evolution][archive]") {
     Archive a = Archive::grid({{"x", 0, 1, 2}, {"y", 0, 1, 2}});
     using P = Archive::Placement;
-    CHECK(a.insert(elite(0, 1.0, {0.1, 0.1})) == P::filled);
-    CHECK(a.insert(elite(1, 2.0, {0.2, 0.3})) == P::replaced);
+    CHECK(a.insert(elite(0, 1.0, {0.1, 0.1})).placement == P::filled);
+    CHECK(a.insert(elite(1, 2.0, {0.2, 0.3})).placement == P::replaced);
     CHECK(a.elites().at(0).id == 1);
-    CHECK(a.insert(elite(2, 2.0, {0.4, 0.4})) == P::replaced);  // equal fitness: the younger wins
+    CHECK(a.insert(elite(2, 2.0, {0.4, 0.4})).placement == P::replaced);  // equal fitness: the younger wins
     CHECK(a.elites().at(0).id == 2);
-    CHECK(a.insert(elite(3, 1.5, {0.0, 0.0})) == P::rejected);  // worse
+    CHECK(a.insert(elite(3, 1.5, {0.0, 0.0})).placement == P::rejected);  // worse
     CHECK(a.elites().at(0).id == 2);
-    CHECK(a.insert(elite(4, invalid_fitness, {0.9, 0.9})) == P::rejected);  // invalid enters nowhere
-    CHECK(a.insert(elite(5, 7.0, {0.9, std::nan("")})) == P::rejected);     // unplaceable
-    CHECK(a.insert(elite(6, 7.0, {0.9})) == P::rejected);
+    CHECK(a.insert(elite(4, invalid_fitness, {0.9, 0.9})).placement == P::rejected);  // invalid enters nowhere
+    CHECK(a.insert(elite(5, 7.0, {0.9, std::nan("")})).placement == P::rejected);     // unplaceable
+    CHECK(a.insert(elite(6, 7.0, {0.9})).placement == P::rejected);
     CHECK(a.occupied() == 1);
-    CHECK(a.insert(elite(7, -3.0, {0.9, 0.1})) == P::filled);  // cell (1, 0) = 2
-    CHECK(a.insert(elite(8, -9.0, {0.1, 0.9})) == P::filled);  // cell (0, 1) = 1
+    CHECK(a.insert(elite(7, -3.0, {0.9, 0.1})).placement == P::filled);  // cell (1, 0) = 2
+    CHECK(a.insert(elite(8, -9.0, {0.1, 0.9})).placement == P::filled);  // cell (0, 1) = 1
     REQUIRE(a.snapshot().size() == 3);
     CHECK(a.snapshot()[0]->id == 2);  // index order: cells 0, 1, 2
     CHECK(a.snapshot()[1]->id == 8);
     CHECK(a.snapshot()[2]->id == 7);
+}
+
+TEST_CASE("insertion reports the cell, the elite and the threshold it met", "[evolution][archive]") {
+    Archive a = Archive::grid({{"x", 0, 1, 2}});
+    const Archive::Insertion first = a.insert(elite(0, 1.0, {0.1}));
+    CHECK(first.cell == 0u);
+    CHECK_FALSE(first.elite_fitness);
+    const Archive::Insertion second = a.insert(elite(1, 0.5, {0.2}));
+    CHECK(second.placement == Archive::Placement::rejected);
+    CHECK(second.elite_fitness == 1.0);
+    CHECK_FALSE(a.insert(elite(2, 1.0, {std::nan("")})).cell);
+    CHECK(a.thresholds().empty());  // none kept without keep_thresholds
+}
+
+TEST_CASE("kept thresholds move by the learning rate toward a child that beats them", "[evolution][archive]") {
+    Archive a = Archive::grid({{"x", 0, 1, 2}});
+    a.keep_thresholds({0.5, 0.0});
+    CHECK_NOTHROW(a.keep_thresholds({0.5, 0.0}));
+    CHECK_THROWS_AS(a.keep_thresholds({0.1, 0.0}), std::invalid_argument);
+    CHECK(a.insert(elite(0, 10.0, {0.1})).threshold == 0.0);  // 0 -> 0.5 * 0 + 0.5 * 10
+    CHECK(a.thresholds().at(0) == 5.0);
+    const Archive::Insertion second = a.insert(elite(1, 8.0, {0.1}));  // 5 -> 6.5; the elite stays the 10
+    CHECK(second.threshold == 5.0);
+    CHECK(second.placement == Archive::Placement::rejected);
+    CHECK(a.thresholds().at(0) == 6.5);
+    a.insert(elite(2, 4.0, {0.1}));  // below the threshold: no change
+    CHECK(a.thresholds().at(0) == 6.5);
+    a.insert(elite(3, -1.0, {0.9}));  // below threshold_min: no entry for its cell
+    CHECK(a.elites().at(0).fitness == 10.0);
+    CHECK(a.thresholds().size() == 1);
+    a.restore_threshold(1, 0.25);
+    CHECK(a.thresholds().at(1) == 0.25);
+    Archive plain = Archive::grid({{"x", 0, 1, 2}});
+    CHECK_THROWS_AS(plain.restore_threshold(0, 1.0), std::logic_error);
+    CHECK_THROWS_AS(plain.keep_thresholds({1.5, 0.0}), std::invalid_argument);
 }
 
 TEST_CASE("restore checks the cell against the elite", "[evolution][archive]") {

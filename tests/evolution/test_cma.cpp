@@ -1,11 +1,13 @@
 // The CMA emitters (sep_cma.hpp, full_cma.hpp, cma_emitter.hpp, docs/algorithm.md
 // §9.9): separable and full CMA-ES against known cases, the textbook rate on a
 // sphere and a rotated ellipsoid only the full model can learn, the
-// threshold archive's arithmetic, the same run for any threads, exact resume
+// CMA emitter alone, the same run for any threads, exact resume
 // through the checkpoint's JSON and genome blob, and damaged states refused.
-#include "evolution/emitter_state_json.hpp"
+#include "evolution/cma_emitter.hpp"
 #include "evolution/cma_rates.hpp"
+#include "evolution/emitter_state_json.hpp"
 #include "evolution/full_cma.hpp"
+#include "evolution/gaussian_emitter.hpp"
 #include "evolution/map_elites.hpp"
 #include "evolution/map_elites_state_json.hpp"
 #include "evolution/pipeline.hpp"
@@ -30,20 +32,28 @@ double sphere(const std::vector<double>& x) {
     return s;
 }
 
-EmitterSpec cma(EmitterKind kind, double share = 1.0, CmaCovariance covariance = CmaCovariance::diagonal) {
-    EmitterSpec e;
-    e.kind = kind;
-    e.covariance = covariance;
-    e.share = share;
-    e.sigma0 = 0.3;
-    if (kind == EmitterKind::cma_mae) {
-        e.parents = CmaParents::mu;
-        e.restart = CmaRestart::basic;
-        e.learning_rate = 0.1;
-        e.threshold_min = -30.0;
+CmaSettings cma_settings(CmaRanking ranking, CmaCovariance covariance = CmaCovariance::diagonal) {
+    CmaSettings s;
+    s.ranking = ranking;
+    s.covariance = covariance;
+    s.sigma0 = 0.3;
+    if (ranking == CmaRanking::threshold) {
+        s.parents = CmaParents::mu;
+        s.restart = CmaRestart::basic;
+        s.thresholds = {0.1, -30.0};
     }
-    return e;
+    return s;
 }
+
+constexpr CmaRanking cma_me = CmaRanking::improvement, cma_mae = CmaRanking::threshold;
+
+EmitterSpec cma(CmaRanking ranking, double share = 1.0, CmaCovariance covariance = CmaCovariance::diagonal) {
+    return {share, std::make_shared<CmaEmitter>(ParentSelection::uniform, cma_settings(ranking, covariance))};
+}
+
+EmitterSpec gaussian() { return {1.0, std::make_shared<GaussianEmitter>()}; }
+
+const CmaEmitter& cma_of(const EmitterSlot& slot) { return dynamic_cast<const CmaEmitter&>(*slot); }
 
 MapElitesState empty_state() { return MapElitesState{0, Archive::grid({{"x", -2, 3, 8}, {"y", -2, 3, 8}}), {}, 0, 0}; }
 
@@ -227,33 +237,96 @@ TEST_CASE("full CMA-ES learns a rotated ellipsoid the separable model cannot", "
     }
 }
 
-TEST_CASE("the threshold archive moves a cell's threshold by alpha toward a child that beats it", "[evolution][cma]") {
+TEST_CASE("a CMA emitter alone: random until started, ranks what the archive told, restarts", "[evolution][cma]") {
+    const std::vector<Block> blocks{{0, 2}, {2, 2}};
+    const BirthRules rules{4, 2.0, 0.3, 0.05, 0.3};
+    const ParentPool none({});
+    CmaSettings settings = cma_settings(cma_me);
+    settings.parents = CmaParents::filter;
+    settings.restart = CmaRestart::no_improvement;
+    CmaEmitter emitter(ParentSelection::uniform, settings);
+    const EmitterSource source{rules, blocks, 4, 9, none};
+    // Not started: the birth is a random genome, and children are not collected.
+    CHECK(emitter.conceive(source, 7).params == conceive_birth(rules, blocks, 4, 9, 7, {}).params);
+    Individual elite;
+    elite.id = 2;
+    elite.params = {1.0, 2.0, 3.0, 4.0};
+    elite.fitness = 1.0;
+    const ElitePicker nothing = [](ParentSelection) -> const Individual* { return nullptr; };
+    const ElitePicker picks_elite = [&](ParentSelection) -> const Individual* { return &elite; };
+    emitter.told(elite, {}, false, nothing);
+    CHECK(emitter.state().children.empty());
+    emitter.generation_ended(nothing);  // an empty archive: still not started
+    CHECK_FALSE(emitter.state().started);
+    emitter.generation_ended(picks_elite);
+    REQUIRE(emitter.state().started);
+    CHECK(emitter.state().cma.mean == elite.params);
+    CHECK(emitter.state().origin == 2u);
+    // Started: samples of N(mean, sigma0^2 I) from the birth's stream, parent1 the origin.
+    const Individual child = emitter.conceive(source, 8);
+    RandomStream stream(9, 8);
+    CHECK(child.params == sep_cma_sample(emitter.state().cma, stream));
+    CHECK(child.parent1 == 2u);
+    // The ranks: a new cell (2), an improvement (1), neither (0), invalid.
+    Individual scored = child;
+    scored.fitness = 3.0;
+    Archive::Insertion filled{Archive::Placement::filled, 5, std::nullopt, 0.0};
+    Archive::Insertion improved{Archive::Placement::replaced, 5, 2.5, 0.0};
+    Archive::Insertion worse{Archive::Placement::rejected, 5, 4.0, 0.0};
+    CHECK(rank_cma_child(CmaRanking::improvement, scored, filled).status == 2);
+    CHECK(rank_cma_child(CmaRanking::improvement, scored, filled).value == 3.0);
+    CHECK(rank_cma_child(CmaRanking::improvement, scored, improved).status == 1);
+    CHECK(rank_cma_child(CmaRanking::improvement, scored, improved).value == 0.5);
+    CHECK(rank_cma_child(CmaRanking::improvement, scored, worse).status == 0);
+    Archive::Insertion below_threshold{Archive::Placement::rejected, 5, 4.0, 2.0};
+    CHECK(rank_cma_child(CmaRanking::threshold, scored, below_threshold).status == 1);
+    CHECK(rank_cma_child(CmaRanking::threshold, scored, below_threshold).value == 1.0);
+    Individual invalid = child;
+    invalid.fitness = invalid_fitness;
+    CHECK(rank_cma_child(CmaRanking::improvement, invalid, {}).value == invalid_fitness);
+    CHECK(rank_cma_child(CmaRanking::improvement, invalid, {}).status == 0);
+    // An iteration of children that improve nothing ends in a restart (no_improvement).
+    emitter.told(scored, worse, false, picks_elite);
+    CHECK(emitter.state().children.size() == 1);
+    elite.params = {0.0, 0.0, 0.0, 0.0};
+    emitter.told(scored, worse, /*last=*/true, picks_elite);
+    CHECK(emitter.state().restarts == 1);
+    CHECK(emitter.state().cma.mean == elite.params);
+    CHECK(emitter.state().children.empty());
+    // Its state goes to JSON and back, into a fresh emitter of the same settings.
+    emitter.told(scored, improved, false, picks_elite);
+    const nlohmann::json saved = emitter.state_to_json(nullptr);
+    CmaEmitter back(ParentSelection::uniform, settings);
+    back.state_from_json(saved, {4, 9, 0, 4, 4}, "e", nullptr);  // births 9: one child of this iteration
+    CHECK(back.state_to_json(nullptr) == saved);
+    CHECK_THROWS_WITH(back.state_from_json(saved, {4, 10, 0, 4, 4}, "e", nullptr), Catch::Contains("e.children"));
+    CHECK_FALSE(emitter.thresholds());
+    CHECK(CmaEmitter(ParentSelection::uniform, cma_settings(cma_mae)).thresholds() == ThresholdParams{0.1, -30.0});
+}
+
+TEST_CASE("cma_mae emitters rank by the archive's thresholds, which MapElites makes it keep", "[evolution][cma]") {
     DescribedSphereProblem problem(6, 2);
-    EmitterSpec mae = cma(EmitterKind::cma_mae);
-    mae.learning_rate = 0.5;
-    mae.threshold_min = 0.0;
-    MapElitesParams params = params_with({mae});
+    CmaSettings settings = cma_settings(cma_mae);
+    settings.thresholds = {0.5, 0.0};
+    MapElitesParams params = params_with({{1.0, std::make_shared<CmaEmitter>(ParentSelection::uniform, settings)}});
     params.population = 4;
     MapElites me(params, 3, problem, empty_state());
-    auto child = [&](double fitness) {
-        Individual c;
-        c.id = me.births();
-        c.params.assign(6, 0.1);
-        c.fitness = fitness;
-        c.descriptors = {0.1, 0.1};
-        std::string error;
-        me.insert(c, error);
-    };
-    const std::uint64_t cell = *me.state().archive.cell_of(std::vector<double>{0.1, 0.1});
-    child(10.0);  // 0 -> 0.5 * 0 + 0.5 * 10
-    CHECK(me.state().thresholds.at(cell) == 5.0);
-    child(8.0);   // 5 -> 6.5; the elite stays the 10
-    CHECK(me.state().thresholds.at(cell) == 6.5);
-    child(4.0);   // below the threshold: no change
-    CHECK(me.state().thresholds.at(cell) == 6.5);
-    child(-1.0);  // below threshold_min: no entry for its cell either
-    CHECK(me.state().archive.elites().at(cell).fitness == 10.0);
-    CHECK(me.state().thresholds.size() == 1);
+    REQUIRE(me.state().archive.threshold_params() == ThresholdParams{0.5, 0.0});
+    Individual c;
+    c.id = 0;
+    c.params.assign(6, 0.1);
+    c.fitness = 10.0;
+    c.descriptors = {0.1, 0.1};
+    std::string error;
+    me.insert(c, error);
+    CHECK(me.state().archive.thresholds().at(*me.last_insertion().cell) == 5.0);
+    // Emitters that disagree on the thresholds are refused.
+    CmaSettings other = settings;
+    other.thresholds.threshold_min = -1.0;
+    const MapElitesParams clash =
+        params_with({{1.0, std::make_shared<CmaEmitter>(ParentSelection::uniform, settings)},
+                     {1.0, std::make_shared<CmaEmitter>(ParentSelection::uniform, other)}});
+    CHECK_THROWS_WITH(MapElites(clash, 3, problem, empty_state()), Catch::Contains("same learning_rate"));
 }
 
 TEST_CASE("CMA-ME and CMA-MAE runs are the same for 1, 2 and 8 threads and continue exactly from a checkpoint",
@@ -261,10 +334,10 @@ TEST_CASE("CMA-ME and CMA-MAE runs are the same for 1, 2 and 8 threads and conti
     DescribedSphereProblem problem(6, 2, /*faulty=*/true);
     const BirthSchedule schedule{ScheduleKind::pipeline, 24, 9};
     const std::vector<std::vector<EmitterSpec>> setups{
-        {cma(EmitterKind::cma_me)},
-        {cma(EmitterKind::cma_mae), cma(EmitterKind::cma_mae, 2.0)},
-        {EmitterSpec{}, cma(EmitterKind::cma_me), cma(EmitterKind::cma_mae)},
-        {cma(EmitterKind::cma_me, 1.0, CmaCovariance::full), cma(EmitterKind::cma_mae, 1.0, CmaCovariance::full)},
+        {cma(cma_me)},
+        {cma(cma_mae), cma(cma_mae, 2.0)},
+        {gaussian(), cma(cma_me), cma(cma_mae)},
+        {cma(cma_me, 1.0, CmaCovariance::full), cma(cma_mae, 1.0, CmaCovariance::full)},
     };
     for (const std::vector<EmitterSpec>& emitters : setups) {
         const MapElitesParams params = params_with(emitters);
@@ -281,7 +354,11 @@ TEST_CASE("CMA-ME and CMA-MAE runs are the same for 1, 2 and 8 threads and conti
         CHECK(map_elites_state_to_json(run_to(eight, 1200)).dump() == expected);
         // The CMA emitters did work: updates since their last start, or restarts.
         std::uint64_t work = 0;
-        for (const CmaEmitterState& e : done.emitters) work += e.cma.updates + e.full.updates + e.restarts;
+        for (const EmitterSlot& slot : done.emitters) {
+            if (slot->kind() == "gaussian") continue;
+            const CmaEmitterState& e = cma_of(slot).state();
+            work += e.cma.updates + e.full.updates + e.restarts;
+        }
         CHECK(work > 0);
 
         for (std::uint64_t stop_at : {23u, 24u, 30u, 47u, 500u, 1111u}) {
@@ -305,7 +382,7 @@ TEST_CASE("CMA-ME and CMA-MAE runs are the same for 1, 2 and 8 threads and conti
 
 TEST_CASE("a damaged emitter state or threshold is refused, naming it", "[evolution][cma][checkpoint]") {
     DescribedSphereProblem problem(6, 2);
-    const MapElitesParams params = params_with({EmitterSpec{}, cma(EmitterKind::cma_mae), cma(EmitterKind::cma_me)});
+    const MapElitesParams params = params_with({gaussian(), cma(cma_mae), cma(cma_me)});
     ThreadEvaluator pool(problem, 2);
     MapElites me(params, 5, problem, empty_state());
     BirthPipeline pipeline({ScheduleKind::batch, 24, 24}, me, pool);
@@ -347,11 +424,11 @@ TEST_CASE("a damaged emitter state or threshold is refused, naming it", "[evolut
     std::fill_n(zero.genomes.begin() + static_cast<std::ptrdiff_t>(index * 6 * 8), 8, '\0');
     CHECK_THROWS_WITH(load(zero, params, 6), Catch::Contains("map_elites.emitters[1].variances"));
     // A full covariance that is not symmetric, or not positive definite.
-    const MapElitesParams full = params_with({EmitterSpec{}, cma(EmitterKind::cma_me, 1.0, CmaCovariance::full)});
+    const MapElitesParams full = params_with({gaussian(), cma(cma_me, 1.0, CmaCovariance::full)});
     MapElites full_me(full, 5, problem, empty_state());
     BirthPipeline full_pipeline({ScheduleKind::batch, 24, 24}, full_me, pool);
     REQUIRE(full_pipeline.run(24 * 6, ignore, never));
-    REQUIRE(full_me.state().emitters[1].full.covariance.size() == 36);
+    REQUIRE(cma_of(full_me.state().emitters[1]).state().full.covariance.size() == 36);
     const Stored full_good = store(full_me.state());
     REQUIRE_NOTHROW(load(full_good, full, 6));
     REQUIRE(full_good.document["emitters"][1]["covariance"].size() == 6);
@@ -361,7 +438,7 @@ TEST_CASE("a damaged emitter state or threshold is refused, naming it", "[evolut
         std::memcpy(bad.genomes.data() + (g * 6 + column) * 8, &value, 8);  // little-endian, as the blob
         return bad;
     };
-    const double c01 = full_me.state().emitters[1].full.covariance[1];
+    const double c01 = cma_of(full_me.state().emitters[1]).state().full.covariance[1];
     CHECK_THROWS_WITH(load(damaged(0, 1, c01 + 1e-9), full, 6),
                       Catch::Contains("map_elites.emitters[1].covariance") && Catch::Contains("symmetric positive definite"));
     CHECK_THROWS_WITH(load(damaged(2, 2, -1.0), full, 6), Catch::Contains("map_elites.emitters[1].covariance"));
@@ -369,10 +446,10 @@ TEST_CASE("a damaged emitter state or threshold is refused, naming it", "[evolut
     short_rows.document["emitters"][1]["covariance"].erase(5);
     CHECK_THROWS_WITH(load(short_rows, full, 6), Catch::Contains("map_elites.emitters[1].covariance"));
     // A full state under a config that asks for the diagonal model.
-    CHECK_THROWS_WITH(load(full_good, params_with({EmitterSpec{}, cma(EmitterKind::cma_me)}), 6),
+    CHECK_THROWS_WITH(load(full_good, params_with({gaussian(), cma(cma_me)}), 6),
                       Catch::Contains("map_elites.emitters[1]"));
     // Thresholds in a run without cma_mae.
-    const MapElitesParams no_mae = params_with({EmitterSpec{}, cma(EmitterKind::cma_me)});
+    const MapElitesParams no_mae = params_with({gaussian(), cma(cma_me)});
     CHECK_THROWS_WITH(load(good, no_mae, 6), Catch::Contains("map_elites"));
 }
 

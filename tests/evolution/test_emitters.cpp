@@ -1,12 +1,14 @@
 // MAP-Elites emitters (emitters.hpp): shares that add up to the generation,
-// iso+line and fitness-proportional statistics, the default equal to the
-// behaviour before emitters, and the same run for any threads, order of
-// results and stop.
+// the gaussian and iso+line emitters alone, fitness-proportional
+// statistics, and the same run for any threads, order of results and stop.
 #include "evolution/emitters.hpp"
+#include "evolution/gaussian_emitter.hpp"
+#include "evolution/iso_line_emitter.hpp"
 #include "evolution/map_elites.hpp"
 #include "evolution/map_elites_state_json.hpp"
 #include "evolution/pipeline.hpp"
 #include "evolution/thread_evaluator.hpp"
+#include "tests/evolution/breeding.hpp"
 #include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
@@ -22,13 +24,16 @@ using morphogen::test::DescribedSphereProblem;
 namespace {
 EmitterSpec iso_line(double share, double sigma_iso, double sigma_line,
                      ParentSelection selection = ParentSelection::uniform) {
-    EmitterSpec e;
-    e.kind = EmitterKind::iso_line;
-    e.share = share;
-    e.sigma_iso = sigma_iso;
-    e.sigma_line = sigma_line;
-    e.selection = selection;
-    return e;
+    return {share, std::make_shared<IsoLineEmitter>(selection, IsoLineSettings{sigma_iso, sigma_line})};
+}
+
+EmitterSpec gaussian(double share = 1.0) { return {share, std::make_shared<GaussianEmitter>()}; }
+
+// Birth `birth` of `spec`'s emitter from `pool` (population 10, dimension 4, seed `seed`).
+Individual emit(const EmitterSpec& spec, std::span<const Block> blocks, std::uint64_t seed, std::uint64_t birth,
+                const ParentPool& pool) {
+    const BirthRules r{10, 2.0, 0.3, 0.05, 0.3};
+    return spec.emitter->conceive(EmitterSource{r, blocks, 4, seed, pool}, birth);
 }
 
 Individual elite(std::uint64_t id, std::vector<double> params, double fitness) {
@@ -38,8 +43,6 @@ Individual elite(std::uint64_t id, std::vector<double> params, double fitness) {
     e.fitness = fitness;
     return e;
 }
-
-BirthRules rules(std::uint64_t population) { return {population, 2.0, 0.3, 0.05, 0.3}; }
 
 MapElitesState empty_state() { return MapElitesState{0, Archive::grid({{"x", -2, 3, 8}, {"y", -2, 3, 8}}), {}, 0, 0}; }
 
@@ -56,12 +59,12 @@ std::string run(Problem& problem, const MapElitesParams& params, GenomeEvaluator
 }  // namespace
 
 TEST_CASE("emitter shares add up to the generation, by largest remainders", "[evolution][emitters]") {
-    const std::vector<EmitterSpec> three{EmitterSpec{}, EmitterSpec{}, EmitterSpec{}};
+    const std::vector<EmitterSpec> three{gaussian(), gaussian(), gaussian()};
     CHECK(births_per_generation(three, 10) == std::vector<std::uint64_t>{4, 3, 3});
-    std::vector<EmitterSpec> two{EmitterSpec{}, EmitterSpec{}};
+    std::vector<EmitterSpec> two{gaussian(), gaussian()};
     two[0].share = 3;
     CHECK(births_per_generation(two, 10) == std::vector<std::uint64_t>{8, 2});  // 7.5 and 2.5: the tie to the first
-    CHECK(births_per_generation(std::vector<EmitterSpec>{EmitterSpec{}}, 7) == std::vector<std::uint64_t>{7});
+    CHECK(births_per_generation(std::vector<EmitterSpec>{gaussian()}, 7) == std::vector<std::uint64_t>{7});
     std::mt19937 random(3);
     for (int trial = 0; trial < 200; ++trial) {
         std::vector<EmitterSpec> specs(1 + random() % 6);
@@ -77,7 +80,7 @@ TEST_CASE("emitter shares add up to the generation, by largest remainders", "[ev
         for (std::uint64_t b = 3 * P; b < 4 * P; ++b) ++counted[emitter_of(b, n, P)];
         CHECK(counted == n);
     }
-    std::vector<EmitterSpec> bad{EmitterSpec{}};
+    std::vector<EmitterSpec> bad{gaussian()};
     bad[0].share = 0;
     CHECK_THROWS_AS(births_per_generation(bad, 10), std::invalid_argument);
     CHECK_THROWS_AS(births_per_generation(std::vector<EmitterSpec>{}, 10), std::invalid_argument);
@@ -92,7 +95,7 @@ TEST_CASE("iso+line variation: isotropic steps of sigma_iso, line steps of sigma
         const ParentPool pool({&only});
         double sum = 0, squares = 0;
         for (int b = 0; b < n; ++b) {
-            const Individual child = emit(iso_line(1, 0.1, 0.7), rules(10), blocks, 4, 5, 10 + b, pool);
+            const Individual child = emit(iso_line(1, 0.1, 0.7), blocks, 5, 10 + b, pool);
             CHECK(child.parent1 == 3u);
             for (std::size_t i = 0; i < 4; ++i) {
                 const double step = child.params[i] - x[i];
@@ -110,7 +113,7 @@ TEST_CASE("iso+line variation: isotropic steps of sigma_iso, line steps of sigma
         double sum = 0, squares = 0;
         int on_line = 0;
         for (int k = 0; k < n; ++k) {
-            const Individual child = emit(iso_line(1, 0.0, 0.7), rules(10), blocks, 4, 8, 10 + k, pool);
+            const Individual child = emit(iso_line(1, 0.0, 0.7), blocks, 8, 10 + k, pool);
             const std::vector<double>& from = *child.parent1 == 1 ? x : y;
             const std::vector<double>& to = *child.parent2 == 1 ? x : y;
             if (child.parent1 == child.parent2) {
@@ -128,10 +131,34 @@ TEST_CASE("iso+line variation: isotropic steps of sigma_iso, line steps of sigma
         CHECK(std::abs(mean) < 4 * 0.7 / std::sqrt(double(on_line)));
         CHECK(sd == Approx(0.7).epsilon(0.03));
     }
-    // Generation 0 and an empty archive give random genomes, as the gaussian birth does.
+    // An empty archive gives random genomes, as the gaussian birth does.
     const ParentPool none({});
-    CHECK(emit(iso_line(1, 0.1, 0.2), rules(10), blocks, 4, 5, 3, none).params ==
-          emit(EmitterSpec{}, rules(10), blocks, 4, 5, 3, none).params);
+    CHECK(emit(iso_line(1, 0.1, 0.2), blocks, 5, 13, none).params == emit(gaussian(), blocks, 5, 13, none).params);
+    CHECK_FALSE(emit(iso_line(1, 0.1, 0.2), blocks, 5, 13, none).parent1);
+}
+
+TEST_CASE("the gaussian emitter is conceive_birth with the pool's picks", "[evolution][emitters]") {
+    const std::vector<Block> blocks{{0, 2}, {2, 2}};
+    const Individual a = elite(1, {0.5, -1.0, 2.0, 0.0}, 1.0), b = elite(2, {1.5, 1.0, 2.0, -3.0}, 4.0);
+    const ParentPool pool({&a, &b});
+    const BirthRules r{10, 2.0, 0.3, 0.05, 0.3};
+    for (ParentSelection selection : {ParentSelection::uniform, ParentSelection::fitness_proportional}) {
+        const EmitterSpec spec{1.0, std::make_shared<GaussianEmitter>(selection)};
+        for (std::uint64_t birth = 10; birth < 60; ++birth) {
+            const Individual child = emit(spec, blocks, 5, birth, pool);
+            const Individual expected = conceive_birth(r, blocks, 4, 5, birth, pool.picker(selection));
+            CHECK(child.params == expected.params);
+            CHECK(child.parent1 == expected.parent1);
+            CHECK(child.parent2 == expected.parent2);
+        }
+    }
+    // A stateless emitter keeps no checkpoint entry and takes only null.
+    GaussianEmitter fresh;
+    CHECK_FALSE(fresh.keeps_state());
+    CHECK(fresh.state_to_json(nullptr).is_null());
+    CHECK_NOTHROW(fresh.state_from_json(nullptr, {}, "e", nullptr));
+    CHECK_THROWS_WITH(fresh.state_from_json(nlohmann::json::object(), {}, "e", nullptr),
+                      Catch::Contains("e: a stateless emitter's entry must be null"));
 }
 
 TEST_CASE("fitness-proportional selection draws elites by fitness - worst + spread/20", "[evolution][emitters]") {
@@ -157,29 +184,26 @@ TEST_CASE("fitness-proportional selection draws elites by fitness - worst + spre
     for (int id = 1; id <= 3; ++id) CHECK(uniform[id] / double(n) == Approx(1 / 3.0).epsilon(0.03));
 }
 
-TEST_CASE("the default emitter is the MAP-Elites of before; emitters change the run, threads do not",
-          "[evolution][emitters][determinism]") {
+TEST_CASE("emitters change the run, threads do not", "[evolution][emitters][determinism]") {
     DescribedSphereProblem problem(6, 2, /*faulty=*/true);
     const BirthSchedule schedule{ScheduleKind::pipeline, 12, 7};
     MapElitesParams plain;
     plain.population = 12;
     plain.mutation_rate = 0.3;
-    MapElitesParams explicit_gaussian = plain;
-    explicit_gaussian.emitters = {EmitterSpec{}};
+    plain.emitters = {gaussian()};
     ThreadEvaluator one(problem, 1);
     const std::string before = run(problem, plain, one, 400, schedule);
-    CHECK(run(problem, explicit_gaussian, one, 400, schedule) == before);
 
     MapElitesParams mixed = plain;
-    mixed.emitters = {EmitterSpec{}, iso_line(2, 0.05, 0.3, ParentSelection::fitness_proportional)};
+    mixed.emitters = {gaussian(), iso_line(2, 0.05, 0.3, ParentSelection::fitness_proportional)};
     const std::string expected = run(problem, mixed, one, 400, schedule);
     CHECK(expected != before);
     ThreadEvaluator eight(problem, 8);
     CHECK(run(problem, mixed, eight, 400, schedule) == expected);
-    // The batch step and the pipeline's batch schedule agree with emitters too.
+    // The batch schedule, a pipeline per batch or one for the run, agrees with emitters too.
     mixed.batch = 5;
     MapElites stepped5(mixed, 11, problem, empty_state());
-    while (stepped5.state().births < 300) stepped5.step(2);
+    while (stepped5.state().births < 300) test::breed_batch(stepped5, problem, 12, 5, 2);
     CHECK(run(problem, mixed, eight, 300, {ScheduleKind::batch, 12, 5}) ==
           map_elites_state_to_json(stepped5.state()).dump());
 }
@@ -190,7 +214,7 @@ TEST_CASE("a MAP-Elites run with emitters stopped at any birth continues exactly
     MapElitesParams params;
     params.population = 12;
     params.mutation_rate = 0.3;
-    params.emitters = {iso_line(1, 0.02, 0.5), EmitterSpec{}, iso_line(1, 0.1, 0.0, ParentSelection::fitness_proportional)};
+    params.emitters = {iso_line(1, 0.02, 0.5), gaussian(), iso_line(1, 0.1, 0.0, ParentSelection::fitness_proportional)};
     ThreadEvaluator pool(problem, 2);
     const std::string expected = run(problem, params, pool, 300, schedule);
     for (std::uint64_t stop_at : {7u, 12u, 13u, 40u, 251u}) {

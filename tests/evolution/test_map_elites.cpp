@@ -2,10 +2,14 @@
 // parents from the archive, invalid children, the archive's invariants.
 #include "evolution/archive_stats.hpp"
 #include "evolution/batch.hpp"
+#include "evolution/cma_emitter.hpp"
 #include "evolution/cvt.hpp"
+#include "evolution/emitter_registry.hpp"
 #include "evolution/ga_state_json.hpp"
 #include "evolution/map_elites.hpp"
+#include "evolution/gaussian_emitter.hpp"
 #include "evolution/operators.hpp"
+#include "tests/evolution/breeding.hpp"
 #include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
@@ -24,7 +28,18 @@ MapElitesParams small_params() {
     p.batch = 6;  // 20 = 6+6+6+2: exercises the boundary
     p.mutation_rate = 0.3;
     p.crossover = 0.5;
+    p.emitters = {{1.0, std::make_shared<GaussianEmitter>()}};
     return p;
+}
+
+// One batch of the batch schedule (what a run with `batch` does).
+std::vector<test::Bred> step(MapElites& me, Problem& problem, int threads,
+                             std::vector<Archive::Insertion>* insertions = nullptr) {
+    return test::breed_batch(me, problem, static_cast<std::uint64_t>(me.params().population),
+                             static_cast<std::uint64_t>(me.params().batch), threads,
+                             [&](const test::Bred&) {
+                                 if (insertions) insertions->push_back(me.last_insertion());
+                             });
 }
 
 Archive grid2() { return Archive::grid({{"x", -2, 2, 8}, {"y", -2, 2, 8}}); }
@@ -52,13 +67,15 @@ std::string run(Problem& problem, const MapElitesParams& params, Archive archive
                 std::vector<std::string>* outcomes = nullptr) {
     MapElites me(params, 42, problem, MapElitesState{0, std::move(archive), {}, 0, 0});
     while (me.state().births < births) {
-        const EliteBatchOutcome out = me.step(threads);
+        std::vector<Archive::Insertion> insertions;
+        const std::vector<test::Bred> out = step(me, problem, threads, &insertions);
         if (!outcomes) continue;
         std::ostringstream line;
-        for (std::size_t i = 0; i < out.children.size(); ++i)
-            line << out.children[i].id << ':' << (out.cells[i] ? std::to_string(*out.cells[i]) : "-") << ':'
-                 << static_cast<int>(out.placements[i]) << ':' << out.errors[i] << ' ';
-        line << out.ends_generation << out.generation_invalid << '/' << out.generation_new_cells;
+        for (std::size_t i = 0; i < out.size(); ++i)
+            line << out[i].child.id << ':' << (insertions[i].cell ? std::to_string(*insertions[i].cell) : "-") << ':'
+                 << static_cast<int>(insertions[i].placement) << ':' << out[i].error << ' ';
+        line << out.back().what.ends_generation << out.back().what.generation_invalid << '/'
+             << out.back().what.generation_new_cells;
         outcomes->push_back(line.str());
     }
     return dump(me.state());
@@ -98,10 +115,11 @@ TEST_CASE("MAP-Elites: generation 0 is random, later parents are elites of the s
         for (const auto& [cell, e] : me.state().archive.elites()) before.insert(e.id);
         const std::uint64_t first = me.state().births;
         const std::size_t occupied_before = me.state().archive.occupied();
-        const EliteBatchOutcome out = me.step(2);
+        std::vector<Archive::Insertion> insertions;
+        const std::vector<test::Bred> out = step(me, problem, 2, &insertions);
         std::size_t filled = 0;
-        for (std::size_t i = 0; i < out.children.size(); ++i) {
-            const Individual& c = out.children[i];
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            const Individual& c = out[i].child;
             CHECK(c.id == first + i);
             if (c.id < 20) {
                 CHECK_FALSE(c.parent1);
@@ -116,14 +134,14 @@ TEST_CASE("MAP-Elites: generation 0 is random, later parents are elites of the s
             }
             REQUIRE(c.valid());
             CHECK(c.descriptors == std::vector<double>(c.params.begin(), c.params.begin() + 2));
-            CHECK(out.cells[i] == me.state().archive.cell_of(c.descriptors));
-            filled += out.placements[i] == Archive::Placement::filled;
-            auto [it, fresh] = replay.try_emplace(*out.cells[i], c);
+            CHECK(insertions[i].cell == me.state().archive.cell_of(c.descriptors));
+            filled += insertions[i].placement == Archive::Placement::filled;
+            auto [it, fresh] = replay.try_emplace(*insertions[i].cell, c);
             if (!fresh && c.fitness >= it->second.fitness) it->second = c;
         }
         CHECK(me.state().archive.occupied() == occupied_before + filled);
         new_cells += filled;
-        if (out.ends_generation) CHECK(out.generation_new_cells <= new_cells);
+        if (out.back().what.ends_generation) CHECK(out.back().what.generation_new_cells <= new_cells);
     }
     CHECK(crossed > 0);
     CHECK(new_cells == me.state().archive.occupied());
@@ -141,9 +159,9 @@ TEST_CASE("MAP-Elites: generation 0 is random, later parents are elites of the s
 TEST_CASE("MAP-Elites fills more of the map than generation 0 and improves the elites", "[evolution][map_elites]") {
     DescribedSphereProblem problem(6, 2);
     MapElites me(small_params(), 3, problem, MapElitesState{0, grid2(), {}, 0, 0});
-    while (me.state().births < 20) me.step(1);
+    while (me.state().births < 20) step(me, problem, 1);
     const ArchiveStats initial = archive_stats(me.state().archive);
-    while (me.state().births < 3000) me.step(1);
+    test::breed_until(me, problem, 20, 6, 1, 3000);
     const ArchiveStats later = archive_stats(me.state().archive);
     CHECK(later.occupied > initial.occupied);
     CHECK(later.qd_score > initial.qd_score + 0.0);
@@ -159,17 +177,18 @@ TEST_CASE("MAP-Elites: invalid children enter nowhere and never fail the run", "
     bool saw_throw = false, saw_nan = false;
     std::uint64_t invalid = 0, generation_invalid = 0;
     while (me.state().births < 200) {
-        const EliteBatchOutcome out = me.step(2);
-        for (std::size_t i = 0; i < out.children.size(); ++i) {
-            if (out.children[i].valid()) continue;
+        std::vector<Archive::Insertion> insertions;
+        const std::vector<test::Bred> out = step(me, problem, 2, &insertions);
+        for (std::size_t i = 0; i < out.size(); ++i) {
+            if (out[i].what.ends_generation) generation_invalid += out[i].what.generation_invalid;
+            if (out[i].child.valid()) continue;
             ++invalid;
-            CHECK_FALSE(out.cells[i]);
-            CHECK(out.placements[i] == Archive::Placement::rejected);
-            CHECK(out.children[i].descriptors.empty());
-            saw_throw |= out.errors[i] == "genome too wild";
-            saw_nan |= out.errors[i].find("non-finite descriptor 0") != std::string::npos;
+            CHECK_FALSE(insertions[i].cell);
+            CHECK(insertions[i].placement == Archive::Placement::rejected);
+            CHECK(out[i].child.descriptors.empty());
+            saw_throw |= out[i].error == "genome too wild";
+            saw_nan |= out[i].error.find("non-finite descriptor 0") != std::string::npos;
         }
-        if (out.ends_generation) generation_invalid += out.generation_invalid;
     }
     CHECK(saw_throw);
     CHECK(saw_nan);
@@ -180,15 +199,16 @@ TEST_CASE("MAP-Elites: invalid children enter nowhere and never fail the run", "
 TEST_CASE("MAP-Elites: descriptors of the wrong length make a child invalid", "[evolution][map_elites]") {
     DescribedSphereProblem problem(4, 3);  // three descriptors for a two-descriptor grid
     MapElites me(small_params(), 5, problem, MapElitesState{0, grid2(), {}, 0, 0});
-    const EliteBatchOutcome out = me.step(1);
-    for (std::size_t i = 0; i < out.children.size(); ++i) {
-        CHECK_FALSE(out.children[i].valid());
-        CHECK(out.errors[i] == "3 descriptors, the archive has 2");
+    const std::vector<test::Bred> out = step(me, problem, 1);
+    REQUIRE(out.size() == 6);
+    for (const test::Bred& b : out) {
+        CHECK_FALSE(b.child.valid());
+        CHECK(b.error == "3 descriptors, the archive has 2");
     }
     CHECK(me.state().archive.occupied() == 0);
     CHECK_FALSE(me.state().best);
     // with an empty archive after generation 0, births are random genomes
-    while (me.state().births < 26) me.step(1);
+    while (me.state().births < 26) step(me, problem, 1);
     CHECK(me.state().births == 26);
 }
 
@@ -198,11 +218,30 @@ TEST_CASE("MAP-Elites continues exactly from a copied state", "[evolution][map_e
     const std::string whole = run(problem, params, grid2(), 2, 200);
     for (std::uint64_t stop : {6ULL, 20ULL, 38ULL, 100ULL}) {
         MapElites first(params, 42, problem, MapElitesState{0, grid2(), {}, 0, 0});
-        while (first.state().births < stop) first.step(1);
+        while (first.state().births < stop) step(first, problem, 1);
         MapElites second(params, 42, problem, first.state());
-        while (second.state().births < 200) second.step(8);
+        while (second.state().births < 200) step(second, problem, 8);
         CHECK(dump(second.state()) == whole);
     }
+}
+
+TEST_CASE("MAP-Elites without emitters runs the default ones: two cma_me", "[evolution][map_elites][emitters]") {
+    DescribedSphereProblem problem(6, 2);
+    MapElitesParams params = small_params();
+    params.emitters.clear();
+    MapElites me(params, 4, problem, MapElitesState{0, grid2(), {}, 0, 0});
+    REQUIRE(me.state().emitters.size() == 2);
+    for (const EmitterSlot& e : me.state().emitters) {
+        CHECK(e->kind() == "cma_me");
+        CHECK(dynamic_cast<const CmaEmitter&>(*e).settings().sigma0 == 0.2);
+    }
+    while (me.state().births < 60) step(me, problem, 1);
+    CHECK(dynamic_cast<const CmaEmitter&>(*me.state().emitters[0]).state().started);
+    MapElitesParams given = small_params();
+    given.emitters = default_emitters();
+    MapElites same(given, 4, problem, MapElitesState{0, grid2(), {}, 0, 0});
+    while (same.state().births < 60) step(same, problem, 1);
+    CHECK(dump(same.state()) == dump(me.state()));
 }
 
 TEST_CASE("MAP-Elites refuses bad parameters", "[evolution][map_elites]") {
@@ -213,6 +252,10 @@ TEST_CASE("MAP-Elites refuses bad parameters", "[evolution][map_elites]") {
     bad = small_params();
     bad.crossover = 1.5;
     CHECK_THROWS_AS(MapElites(bad, 1, problem, MapElitesState{0, grid2(), {}, 0, 0}), std::invalid_argument);
+    // a state whose emitters are not the parameters' kinds
+    MapElitesState other{0, grid2(), {}, 0, 0};
+    other.emitters = fresh_emitters(default_emitters());
+    CHECK_THROWS_AS(MapElites(small_params(), 1, problem, other), std::invalid_argument);
 }
 
 TEST_CASE("evaluate_safely: non-finite descriptors invalidate, problems without descriptors are unaffected",

@@ -1,5 +1,5 @@
 // The birth pipeline (pipeline.hpp): the same run for any thread count and
-// any order of results, the batch schedule equal to step(), lag 1 equal to a
+// any order of results, the batch schedule equal to its loop, lag 1 equal to a
 // plain sequential loop, and a stop at any birth resuming exactly.
 #include "evolution/ga_state_json.hpp"
 #include "evolution/map_elites.hpp"
@@ -8,6 +8,8 @@
 #include "evolution/steady_state.hpp"
 #include "evolution/thread_evaluator.hpp"
 #include "evolution/batch.hpp"
+#include "evolution/gaussian_emitter.hpp"
+#include "tests/evolution/breeding.hpp"
 #include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
@@ -64,6 +66,7 @@ MapElitesParams me_params(int batch) {
     p.population = 12;
     p.batch = batch;
     p.mutation_rate = 0.3;
+    p.emitters = {{1.0, std::make_shared<GaussianEmitter>()}};
     return p;
 }
 
@@ -123,20 +126,43 @@ TEST_CASE("the pipeline keeps at most lag births in flight after generation 0", 
     CHECK(shuffled.most_held == 5);
 }
 
-TEST_CASE("the batch schedule through the pipeline equals the batch step", "[evolution][pipeline][batch]") {
+namespace {
+// The batch schedule written out: every birth of a batch conceived from the
+// state before it, then each scored and inserted in birth order.
+void batch_loop(Breeder& breeder, const Problem& problem, std::uint64_t population, std::uint64_t batch,
+                std::uint64_t births) {
+    while (breeder.births() < births) {
+        const std::uint64_t first = breeder.births();
+        const std::uint64_t count = std::min(batch, population - first % population);
+        std::vector<Individual> children;
+        for (std::uint64_t birth = first; birth < first + count; ++birth) children.push_back(breeder.conceive(birth));
+        for (Individual& child : children) {
+            std::string error;
+            take_evaluation(child, error, evaluate_safely(problem, child.params, 0));
+            breeder.insert(child, error);
+        }
+    }
+}
+}  // namespace
+
+TEST_CASE("the batch schedule through the pipeline is the batch loop", "[evolution][pipeline][batch]") {
     SphereProblem problem(12, 3, true);
     const GaParams params = ga_params(ScheduleKind::batch, 6);
-    SteadyStateGA stepped(params, 7, problem);
-    while (stepped.state().births < 400) stepped.step(2);
+    SteadyStateGA looped(params, 7, problem);
+    batch_loop(looped, problem, 20, 6, 400);
     ShuffledEvaluator shuffled(problem, 4);
-    CHECK(ga_run(problem, params, shuffled, 400) == ga_state_to_json(stepped.state()).dump());
+    CHECK(ga_run(problem, params, shuffled, 400) == ga_state_to_json(looped.state()).dump());
 
     DescribedSphereProblem described(6, 2, true);
     MapElites me(me_params(5), 7, described, me_state());
-    while (me.state().births < 300) me.step(2);
+    batch_loop(me, described, 12, 5, 300);
     ThreadEvaluator pool(described, 3);
-    CHECK(me_run(described, me_params(5), {ScheduleKind::batch, 12, 5}, pool, 300) ==
-          map_elites_state_to_json(me.state()).dump());
+    const std::string whole = me_run(described, me_params(5), {ScheduleKind::batch, 12, 5}, pool, 300);
+    CHECK(whole == map_elites_state_to_json(me.state()).dump());
+    // and a pipeline per batch (the tests' breed_batch) gives the same
+    MapElites batched(me_params(5), 7, described, me_state());
+    while (batched.births() < 300) test::breed_batch(batched, described, 12, 5, 2);
+    CHECK(map_elites_state_to_json(batched.state()).dump() == whole);
 }
 
 TEST_CASE("the pipeline with lag 1 is a plain sequential loop", "[evolution][pipeline]") {

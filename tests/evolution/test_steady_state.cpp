@@ -3,6 +3,7 @@
 #include "evolution/ga_state_json.hpp"
 #include "evolution/population_stats.hpp"
 #include "evolution/steady_state.hpp"
+#include "tests/evolution/breeding.hpp"
 #include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
@@ -19,10 +20,16 @@ GaParams small_params() {
     return p;
 }
 
+// One batch of the batch schedule (what a run with params.batch does).
+std::vector<test::Bred> step(SteadyStateGA& ga, Problem& problem, int threads) {
+    return test::breed_batch(ga, problem, static_cast<std::uint64_t>(ga.params().population),
+                             static_cast<std::uint64_t>(ga.params().batch), threads);
+}
+
 // Runs until `births` births; returns the state as canonical JSON text.
 std::string run(Problem& problem, const GaParams& params, int threads, std::uint64_t births, GaState start = {}) {
     SteadyStateGA ga(params, 42, problem, std::move(start));
-    while (ga.state().births < births) ga.step(threads);
+    while (ga.state().births < births) step(ga, problem, threads);
     return ga_state_to_json(ga.state()).dump();
 }
 }  // namespace
@@ -42,9 +49,9 @@ TEST_CASE("a run is the same for 1 or 2 or 8 threads", "[evolution][determinism]
 TEST_CASE("the GA improves a sphere function", "[evolution]") {
     SphereProblem problem(12, 3);
     SteadyStateGA ga(small_params(), 1, problem);
-    while (ga.state().births < 20) ga.step(1);
+    while (ga.state().births < 20) step(ga, problem, 1);
     const double initial = *summarize(ga.state().population).best;
-    while (ga.state().births < 2000) ga.step(1);
+    test::breed_until(ga, problem, 20, 6, 1, 2000);
     const auto stats = summarize(ga.state().population);
     CHECK(*stats.best > initial);
     CHECK(*stats.best > -1.0);
@@ -60,15 +67,14 @@ TEST_CASE("exceptions and non-finite scores make a child invalid and never fail 
     std::uint64_t invalid = 0, generation_invalid = 0;
     bool saw_throw = false, saw_nan = false;
     while (ga.state().births < 100) {
-        const BatchOutcome out = ga.step(2);
-        for (std::size_t i = 0; i < out.children.size(); ++i) {
-            if (out.children[i].valid()) continue;
+        for (const test::Bred& b : step(ga, problem, 2)) {
+            if (b.what.ends_generation) generation_invalid += b.what.generation_invalid;
+            if (b.child.valid()) continue;
             ++invalid;
-            CHECK(out.children[i].fitness == invalid_fitness);
-            saw_throw |= out.errors[i] == "genome too wild";
-            saw_nan |= out.errors[i].find("non-finite") != std::string::npos;
+            CHECK(b.child.fitness == invalid_fitness);
+            saw_throw |= b.error == "genome too wild";
+            saw_nan |= b.error.find("non-finite") != std::string::npos;
         }
-        if (out.ends_generation) generation_invalid += out.generation_invalid;
     }
     CHECK(saw_throw);
     CHECK(saw_nan);
@@ -86,7 +92,7 @@ TEST_CASE("a state saved mid-generation continues exactly", "[evolution][resume]
     const std::string whole = run(problem, params, 2, 200);
     for (std::uint64_t stop : {6ULL, 20ULL, 38ULL, 100ULL}) {
         SteadyStateGA first(params, 42, problem);
-        while (first.state().births < stop) first.step(1);
+        while (first.state().births < stop) step(first, problem, 1);
         const auto saved = nlohmann::json::parse(ga_state_to_json(first.state()).dump());
         GaState restored = ga_state_from_json(saved, params, problem.dimension());
         CHECK(run(problem, params, 8, 200, std::move(restored)) == whole);
@@ -97,7 +103,7 @@ TEST_CASE("ga_state_from_json refuses states that do not fit", "[evolution][resu
     SphereProblem problem(4, 2);
     const auto params = small_params();
     SteadyStateGA ga(params, 42, problem);
-    while (ga.state().births < 26) ga.step(1);
+    while (ga.state().births < 26) step(ga, problem, 1);
     const auto good = ga_state_to_json(ga.state());
     CHECK_NOTHROW(ga_state_from_json(good, params, 4));
     CHECK_THROWS_WITH(ga_state_from_json(good, params, 5), Catch::Contains("parameters"));
