@@ -78,7 +78,7 @@ RunState generation0_state(const std::string& config_text, std::uint64_t members
             born[i].descriptors = {static_cast<double>(i / 100) + 0.5, static_cast<double>(i % 100) + 0.5};
             archive.restore(i, born[i]);
         }
-        state.elites = MapElitesState{members, std::move(archive), *best, 0, members};
+        state.elites = MapElitesState{members, std::move(archive), *best, 0, members, fresh_emitters(config.qd.emitters)};
     } else {
         state.ga.births = members;
         state.ga.best = *best;
