@@ -9,7 +9,7 @@ import re
 import sys
 
 BELOW = {
-    'base': set(), 'evolution': set(),
+    'base': set(), 'evolution': {'base'},
     'mesh': {'base'},
     'io': {'base', 'mesh'},
     'growth': {'base', 'mesh', 'io'},
