@@ -8,6 +8,7 @@
 #include "report/end_of_run.hpp"
 #include "run/archive_csv.hpp"
 #include "run/checkpoint_checks.hpp"
+#include "run/config_migration.hpp"
 #include "run/evolution_run.hpp"
 #include "run/exit_codes.hpp"
 #include "run/run_records.hpp"
@@ -31,8 +32,9 @@ struct ResumeOptions {
 };
 
 // The keys that decide a run's result must be the same in config.json and the
-// checkpoint; run.generations, threads, checkpoint_every, export_every and
-// name may be edited between sessions.
+// checkpoint, both resolved in the current format (a run directory of an
+// earlier release is migrated); run.generations, threads, checkpoint_every,
+// export_every and name may be edited between sessions.
 void check_same_experiment(const nlohmann::json& checkpoint_config, const nlohmann::json& file_config,
                            const std::string& file) {
     auto deciding = [](const nlohmann::json& c) {
@@ -68,11 +70,11 @@ int run_resume(const ResumeOptions& o) {
     // Check everything before changing anything.
     RunState state = load_checkpoint(paths.checkpoint);
     const nlohmann::json on_disk = load_json_file(paths.config.string());
-    check_same_experiment(state.config, on_disk, paths.config.string());
     ConfigOverrides overrides;
     if (*o.generations_option) overrides.generations = o.generations;
     if (*o.threads_option) overrides.threads = o.threads;
-    ExperimentConfig config = read_experiment_config(on_disk, paths.config.string(), overrides);
+    ExperimentConfig config = read_experiment_config(migrate_config(on_disk), paths.config.string(), overrides);
+    check_same_experiment(state.config, config.resolved, paths.config.string());
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
     std::size_t lineage_descriptor_columns = config.qd.descriptors.size();
     try {

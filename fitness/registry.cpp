@@ -118,8 +118,6 @@ std::unique_ptr<FitnessFunction> read_tree(ObjectReader& reader) {
     read_light_params(reader, params.light);
     params.trunk_target = reader.number("trunk_target", params.trunk_target, 0.0, kBig, /*min_exclusive=*/true);
     params.trunk_power = reader.number("trunk_power", params.trunk_power, 1.0, 10.0);
-    // Configs from before the key resolve as they did, so their runs resume.
-    if (params.trunk_power == 1.0) reader.drop_resolved("trunk_power");
     params.loops_target = static_cast<int>(reader.integer("loops_target", params.loops_target, 1, 1000));
     params.material_cost = reader.number("material_cost", params.material_cost, 0.0, kBig);
     params.root_height = reader.number("root_height", params.root_height, -kBig, kBig);

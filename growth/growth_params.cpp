@@ -36,15 +36,10 @@ GrowthParams read_growth_params(ObjectReader& reader) {
     p.seed_radius = reader.number("seed_radius", p.seed_radius, kMinSeedRadius, kMaxSeedRadius);
     p.collisions = reader.choice("collisions", "allow", {"allow", "prevent"}) == "prevent" ? Collisions::prevent
                                                                                        : Collisions::allow;
-    // The default is not recorded: a config resolves to the same bytes as
-    // before the key existed, so checkpoints written then still resume.
-    if (p.collisions == Collisions::allow) reader.drop_resolved("collisions");
     p.mode = reader.choice("mode", "paper", {"paper", "branching"}) == "branching" ? GrowthMode::branching
                                                                                : GrowthMode::paper;
     if (p.mode == GrowthMode::paper) {
-        // As for collisions: the paper's model resolves to the bytes it always
-        // had. A turn rate means nothing to it, so one given is a mistake.
-        reader.drop_resolved("mode");
+        // A turn rate means nothing to the paper's model: one given is a mistake.
         if (reader.raw("turn_rate") != nullptr)
             reader.issues().add(reader.path_of("turn_rate"), "is used only with growth.mode \"branching\"");
     } else {

@@ -9,6 +9,7 @@
 #include "evolution/map_elites_state_json.hpp"
 #include "growth/network.hpp"
 #include "run/checkpoint_checks.hpp"
+#include "run/config_migration.hpp"
 #include "run/experiment_config.hpp"
 #include "run/fnv_hash.hpp"
 
@@ -72,13 +73,14 @@ std::string content_hash(const std::string& dumped_content, std::string_view gen
     return h.hex();
 }
 
-// The header line of format 2 without its "\n": the document's canonical dump
+// The header line of formats 2 and 3 without its "\n": the document's canonical dump
 // (keys sorted), built around the content's dump so it is dumped only once.
 std::string format2_header(const std::string& dumped_content, std::string_view genomes, std::uint64_t count,
                            std::uint64_t dimension) {
     return "{\"content\":" + dumped_content + ",\"format\":\"" + format_name + "\",\"genomes\":{\"count\":" +
            std::to_string(count) + ",\"dimension\":" + std::to_string(dimension) + ",\"encoding\":\"" +
-           genome_encoding + "\"},\"hash\":\"" + content_hash(dumped_content, genomes) + "\",\"version\":2}";
+           genome_encoding + "\"},\"hash\":\"" + content_hash(dumped_content, genomes) +
+           "\",\"version\":" + std::to_string(checkpoint_version) + "}";
 }
 
 std::string sealed_format2(const json& content, std::string_view genomes, std::uint64_t count,
@@ -102,7 +104,7 @@ std::size_t genome_doubles(const RunState& s) {
     return (s.ga.population.size() + 1 + s.pending.size()) * D;
 }
 
-// A verified envelope: the content as stored and, in format 2, the binary part
+// A verified envelope: the content as stored and, from format 2, the binary part
 // (a view into the checked text).
 struct Envelope {
     int version = 0;
@@ -130,9 +132,12 @@ Envelope open_envelope(const std::string& text, const std::string& source) {
         throw refuse("not a morphogen checkpoint (\"format\" is not \"" + std::string(format_name) + "\")");
     if (!document.contains("version") || !document["version"].is_number_integer())
         throw refuse("it has no version number");
-    if (document["version"] != 1 && document["version"] != 2)
-        throw refuse("version " + document["version"].dump() +
-                     " is not supported (this build reads versions 1 and 2)");
+    const std::string versions = "this build reads versions 1 to " + std::to_string(checkpoint_version);
+    if (document["version"] > checkpoint_version)
+        throw refuse("version " + document["version"].dump() + " was written by a newer morphogen (" + versions +
+                     "): resume it with that build");
+    if (document["version"] < 1)
+        throw refuse("version " + document["version"].dump() + " is not supported (" + versions + ")");
     Envelope envelope;
     envelope.version = document["version"].get<int>();
     if (!document.contains("content") || !document.contains("hash") || !document["hash"].is_string())
@@ -177,6 +182,14 @@ Envelope open_envelope(const std::string& text, const std::string& source) {
         throw refuse("content hash mismatch (corrupt): stored " + document["hash"].get<std::string>() +
                      ", computed " + expected);
     if (document.dump() != header) throw refuse("the file is not in the form morphogen writes (edited or corrupt)");
+    // Versions 2 and 3 differ only in the config's format, which the version
+    // must tell (the hash does not cover it): 3 has format_version, 2 (0.1.0) not.
+    const json& content = document["content"];
+    const bool versioned_config = content.is_object() && content.contains("config") &&
+                                  content["config"].is_object() && content["config"].contains(config_format_key);
+    if (versioned_config != (envelope.version == checkpoint_version))
+        throw refuse("version " + std::to_string(envelope.version) + " with a config " +
+                     (versioned_config ? "with" : "without") + " format_version (edited or corrupt)");
     envelope.content = std::move(document["content"]);
     return envelope;
 }
@@ -224,7 +237,7 @@ std::string checkpoint_text(const json& content) {
 
 json checkpoint_content(const std::string& text, const std::string& source) {
     Envelope envelope = open_envelope(text, source);
-    if (envelope.version == 2) {
+    if (envelope.version >= 2) {
         try {
             GenomeBlobReader genomes(envelope.genomes, envelope.count, envelope.dimension);
             inline_genomes(envelope.content, genomes);
@@ -237,7 +250,7 @@ json checkpoint_content(const std::string& text, const std::string& source) {
 
 CheckpointParts checkpoint_parts(const std::string& bytes, const std::string& source) {
     Envelope envelope = open_envelope(bytes, source);
-    if (envelope.version != 2) throw CheckpointError("checkpoint " + source + " is not in format 2");
+    if (envelope.version < 2) throw CheckpointError("checkpoint " + source + " is not in format 2 or later");
     return {std::move(envelope.content), std::string(envelope.genomes), envelope.count, envelope.dimension};
 }
 
@@ -276,22 +289,29 @@ RunState load_checkpoint(const std::filesystem::path& path) {
     };
     RunState state;
     try {
-        state.config = content.at("config");
+        // A config without format_version is of format 1 (0.1.0's checkpoints,
+        // versions 1 and 2) and migrated (run/config_migration.hpp); version 1
+        // is also how tools seal an edited content (checkpoint_text), so it
+        // may hold either format.
+        const json& stored = content.at("config");
+        const bool current = stored.is_object() && stored.contains(config_format_key);
         state.seed = content.at("seed").get<std::uint64_t>();
         ExperimentConfig config;
         try {
-            config = read_experiment_config(state.config, "checkpoint config");
+            config = read_experiment_config(migrate_config(stored), "checkpoint config");
         } catch (const ConfigError& e) {
             throw refuse(std::string("its config is not valid: ") + e.what());
         }
-        if (config.resolved != state.config) throw refuse("its config is not a resolved config");
+        if (current ? config.resolved != stored : !holds_all_of(config.resolved, stored))
+            throw refuse("its config is not a resolved config");
+        state.config = config.resolved;
         if (config.run.seed != state.seed) throw refuse("its seed differs from its config's run.seed");
         const std::size_t dimension = parameter_count(config.network.layers());
         const auto P = static_cast<std::uint64_t>(config.evolution.population);
         if (content.size() != (content.contains("pending") ? 7u : 6u)) throw refuse("unexpected keys in its content");
-        // Format 2: the genomes come from the binary part, never through JSON numbers.
+        // From format 2 the genomes come from the binary part, never through JSON numbers.
         std::optional<GenomeBlobReader> blob;
-        if (envelope.version == 2) {
+        if (envelope.version >= 2) {
             if (envelope.count > 0 && envelope.dimension != dimension)
                 throw refuse("its genomes have " + std::to_string(envelope.dimension) + " parameters, its network " +
                              std::to_string(dimension));
@@ -327,7 +347,7 @@ RunState load_checkpoint(const std::filesystem::path& path) {
         state.elapsed_s = content.at("elapsed_s").get<double>();
         {
             GenomeBlobWriter rewritten;
-            const json canonical = content_of(state, envelope.version == 2 ? &rewritten : nullptr);
+            const json canonical = content_of(state, envelope.version >= 2 ? &rewritten : nullptr);
             if (const std::string key = unknown_key(content, canonical, ""); !key.empty())
                 throw refuse("unknown key " + key + " in its content");
         }

@@ -1,7 +1,10 @@
 #pragma once
 // checkpoint.json: everything needed to continue a run bit-exactly.
 //
-// File format 2 (written): a JSON header line (keys sorted, compact), "\n",
+// File format 3 (written): format 2 below with "version":3, whose content's
+// config carries its format (`format_version`, run/config_migration.hpp).
+//
+// File format 2 (read: morphogen 0.1.0 wrote it): a JSON header line (keys sorted, compact), "\n",
 // then the genomes as raw bytes:
 //   {"content":{...},"format":"morphogen-checkpoint",
 //    "genomes":{"count":N,"dimension":D,"encoding":"f64le"},"hash":"<16 hex>","version":2}\n
@@ -14,13 +17,13 @@
 // part (jq reads it); the file as a whole is not JSON.
 //
 // File format 1 (read, so runs from older builds resume; the next save writes
-// format 2): the same header with "version":1, no "genomes", genomes inline
+// format 3): the same header with "version":1, no "genomes", genomes inline
 // as "params" arrays, nothing after the "\n"; `hash` is FNV-1a 64 of
 // content.dump().
 //
 // A file is accepted only if its header parses, has this format and a known
 // version, the hash matches, the binary part has exactly the announced size,
-// and the header is byte for byte the canonical dump of what was parsed — so
+// the config has format_version exactly in version 3, and the header is byte for byte the canonical dump of what was parsed — so
 // any truncation or single changed byte is refused. Writes are atomic
 // (atomic_file.hpp): one file, so new genomes never meet an old header.
 //
@@ -30,7 +33,9 @@
 // with genomes, descriptors, fitness, ids and parents, the CVT centroids, the
 // best ever, the generation counters), every
 // history row so far, the length and hash of lineage.csv at checkpoint time,
-// and the elapsed run time.
+// and the elapsed run time. Formats 1 and 2 hold a config of format 1, which
+// is migrated on reading (the state holds the current format; the next save
+// writes it).
 #include "run/run_state.hpp"
 
 #include <nlohmann/json.hpp>
@@ -41,9 +46,9 @@
 
 namespace morphogen {
 
-inline constexpr int checkpoint_version = 2;  // written; 1 and 2 are read
+inline constexpr int checkpoint_version = 3;  // written; 1 to 3 are read
 
-// Atomically writes the checkpoint (format 2). Throws IoError.
+// Atomically writes the checkpoint (format 3). Throws IoError.
 void save_checkpoint(const std::filesystem::path& path, const RunState& state);
 // The bytes save_checkpoint writes.
 std::string checkpoint_bytes(const RunState& state);
@@ -58,13 +63,15 @@ RunState load_checkpoint(const std::filesystem::path& path);
 // The envelope alone (for tests and tools that edit a checkpoint):
 // checkpoint_text is the format-1 text of a content with inline genomes
 // ("params" arrays; still read, so an edited content can be sealed again);
-// checkpoint_content verifies a checkpoint of either format and returns its
-// content with the genomes inline as in format 1 (CheckpointError otherwise).
+// checkpoint_content verifies a checkpoint of any format and returns its
+// content as stored, with the genomes inline as in format 1 (CheckpointError
+// otherwise).
 std::string checkpoint_text(const nlohmann::json& content);
 nlohmann::json checkpoint_content(const std::string& text, const std::string& source);
 
-// The parts of a format-2 checkpoint as stored (genomes by reference), and
-// the file holding them with a correct hash: for tests that edit one.
+// The parts of a checkpoint of format 2 or later as stored (genomes by
+// reference), and the file holding them in format 3 with a correct hash: for
+// tests that edit one.
 struct CheckpointParts {
     nlohmann::json content;
     std::string genomes;  // the binary part

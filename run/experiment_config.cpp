@@ -1,6 +1,7 @@
 #include "run/experiment_config.hpp"
 
 #include "base/config_reader.hpp"
+#include "run/config_migration.hpp"
 
 #include <filesystem>
 
@@ -45,41 +46,22 @@ json with_overrides(const json& document, const ConfigOverrides& o) {
     if (o.threads) run["threads"] = *o.threads;
     return out;
 }
-}  // namespace
 
-GaParams read_evolution_params(ObjectReader& reader, Algorithm* algorithm) {
-    GaParams p;
-    const std::string name = reader.choice("algorithm", "steady_state", {"steady_state", "map_elites"});
-    if (algorithm != nullptr) *algorithm = name == "map_elites" ? Algorithm::map_elites : Algorithm::steady_state;
-    p.population = static_cast<int>(reader.integer("population", p.population, 2, 1'000'000));
-    p.tournament = static_cast<int>(reader.integer("tournament", p.tournament, 1, 1000));
-    p.crossover = reader.number("crossover", p.crossover, 0.0, 1.0);
-    p.mutation_rate = reader.number("mutation_rate", p.mutation_rate, 0.0, 1.0);
-    p.mutation_sigma = reader.number("mutation_sigma", p.mutation_sigma, 0.0, 1000.0);
-    // A config that sets a batch size and no schedule keeps the batch
-    // schedule it was written for (every run made before the pipeline does).
-    const bool batch_given = reader.raw("batch") != nullptr;
-    const bool schedule_given = reader.raw("schedule") != nullptr;
-    const bool lag_given = reader.raw("lag") != nullptr;
-    const std::string schedule =
-        reader.choice("schedule", batch_given ? "batch" : "pipeline", {"pipeline", "batch"});
-    p.schedule = schedule == "batch" ? ScheduleKind::batch : ScheduleKind::pipeline;
-    p.lag = static_cast<int>(reader.integer("lag", p.lag, 1, 1'000'000));
-    p.batch = static_cast<int>(reader.integer("batch", p.batch, 1, 1'000'000));
-    if (p.schedule == ScheduleKind::pipeline) {
-        if (batch_given)
-            reader.issues().add(reader.path_of("batch"),
-                                "applies to schedule \"batch\" only; the pipeline's births in flight are evolution.lag");
-        reader.drop_resolved("batch");
-    } else {
-        if (lag_given) reader.issues().add(reader.path_of("lag"), "applies to schedule \"pipeline\" only");
-        reader.drop_resolved("lag");
-        if (!schedule_given) reader.drop_resolved("schedule");
+// `format_version`: a config a user writes may leave it out (it is then in
+// this build's format); the resolved config always records it.
+void read_format_version(ObjectReader& top) {
+    if (const json* given = top.raw(config_format_key); given != nullptr && *given != config_format_version) {
+        const std::string current = std::to_string(config_format_version);
+        const bool later = given->is_number() && given->get<double>() > config_format_version;
+        top.issues().add(config_format_key,
+                         later ? "format " + given->dump() + " was written by a newer morphogen (this build reads format " +
+                                     current + "): use that build"
+                               : "expected " + current + " (this build's format; a config you write may leave it out), got " +
+                                     given->dump());
     }
-    p.init_range = reader.number("init_range", p.init_range, 0.0, 1000.0);
-    reader.finish();
-    return p;
+    top.set_resolved(config_format_key, config_format_version);
 }
+}  // namespace
 
 RunParams read_run_params(ObjectReader& reader) {
     RunParams p;
@@ -123,6 +105,7 @@ ExperimentConfig read_experiment_config(const json& original, const std::string&
     // "$schema" lets editors find configs/schema.json; it has no effect.
     if (const json* schema = top.raw("$schema"); schema != nullptr && !schema->is_string())
         issues.add("$schema", "expected a string (the path or URL of the schema), got " + schema->dump());
+    read_format_version(top);
 
     config.network = read_section(top, "network", issues, read_network_params);
     config.growth = read_section(top, "growth", issues, read_growth_params);
@@ -140,8 +123,6 @@ ExperimentConfig read_experiment_config(const json& original, const std::string&
     top.finish();
     issues.throw_if_any(source);
     config.resolved = top.resolved();
-    // A steady-state config resolves to the same bytes as before MAP-Elites.
-    if (config.algorithm == Algorithm::steady_state) config.resolved["evolution"].erase("algorithm");
     return config;
 }
 

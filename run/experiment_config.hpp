@@ -1,11 +1,14 @@
 #pragma once
 // The whole experiment config: sections `network`, `growth`, `fitness`,
-// `evolution`, `run`. Every key has a default, so `{}` is valid. Reading
+// `evolution`, `run` (and `descriptors`, `archive`, `emitters` for MAP-Elites),
+// and `format_version` (run/config_migration.hpp: a config a user writes may
+// leave it out; one of a later format is refused). Every key has a default,
+// so `{}` is valid. Reading
 // collects every problem (unknown keys with a suggestion, wrong types, out of
 // range) and throws one ConfigError listing them all with their key paths.
 // configs/schema.json documents the same keys, ranges and defaults (a test
 // keeps the two in step).
-#include "evolution/ga_params.hpp"
+#include "evolution/evolution_params.hpp"
 #include "fitness/fitness.hpp"
 #include "growth/growth_params.hpp"
 #include "run/map_elites_config.hpp"
@@ -38,7 +41,10 @@ struct ExperimentConfig {
     Algorithm algorithm = Algorithm::steady_state;  // evolution.algorithm
     QdParams qd;  // descriptors and archive (map_elites only; empty otherwise)
     RunParams run;
-    nlohmann::json resolved;  // the config with every default filled in
+    // The config with every default filled in and format_version recorded
+    // (keys that do not apply, such as growth.turn_rate in the paper's mode,
+    // are left out): what config.json and checkpoints store.
+    nlohmann::json resolved;
 };
 
 // Values from the command line that replace the document's, before checking
@@ -55,11 +61,8 @@ ExperimentConfig read_experiment_config(const nlohmann::json& document, const st
 // file's stem (characters outside [A-Za-z0-9._-] replaced by '_').
 ExperimentConfig load_experiment_config(const std::string& path, const ConfigOverrides& overrides = {});
 
-// The `evolution` and `run` sections on their own (each calls reader.finish()).
-// `algorithm` (if not null) receives evolution.algorithm; the key is recorded
-// in the reader's resolved section either way (read_experiment_config drops
-// it again for steady_state, so GA configs resolve as before it existed).
-GaParams read_evolution_params(ObjectReader& reader, Algorithm* algorithm = nullptr);
+// The `run` section on its own (calls reader.finish()); `evolution` is read
+// by evolution/evolution_params.hpp.
 RunParams read_run_params(ObjectReader& reader);
 
 // A run name derived from a config path: its stem, sanitised.

@@ -7,14 +7,13 @@
 #include "base/config_reader.hpp"
 #include "evolution/archive.hpp"
 #include "evolution/emitters.hpp"
+#include "evolution/evolution_params.hpp"
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
 namespace morphogen {
-
-enum class Algorithm { steady_state, map_elites };
 
 struct QdParams {
     std::vector<DescriptorRange> descriptors;  // name = the measure (fitness/descriptors.hpp)

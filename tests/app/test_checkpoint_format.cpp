@@ -150,7 +150,7 @@ TEST_CASE("format 2 keeps every genome's exact bits, -0.0, denormals and 1e308 i
 
     // The layout: a JSON header line, then count x dimension x 8 bytes, the genomes in order.
     const auto header = nlohmann::json::parse(saved.substr(0, header_end(saved)));
-    CHECK(header["version"] == 2);
+    CHECK(header["version"] == checkpoint_version);
     CHECK(header["genomes"] == nlohmann::json{{"count", 4}, {"dimension", 30}, {"encoding", "f64le"}});
     CHECK(saved.size() - header_end(saved) - 1 == 4 * 30 * 8);
     const std::uint64_t k = header["content"]["ga"]["population"][member]["genome"].get<std::uint64_t>();
@@ -164,7 +164,7 @@ TEST_CASE("format 2 keeps every genome's exact bits, -0.0, denormals and 1e308 i
     CHECK(same_bits(from_json, params));
 }
 
-TEST_CASE("a format-1 checkpoint (previous builds) loads and resumes; the next save writes format 2",
+TEST_CASE("a format-1 checkpoint (previous builds) loads and resumes; the next save writes the current format",
           "[app][checkpoint][resume]") {
     TempDir tmp("ckpt2-v1");
     const std::string v2 = small_run(tmp, 1);
@@ -179,10 +179,10 @@ TEST_CASE("a format-1 checkpoint (previous builds) loads and resumes; the next s
     CHECK(checkpoint_bytes(from_v1) == v2);  // same state as the format-2 file holds
     CHECK(checkpoint_content(v1, "t") == checkpoint_content(v2, "t"));
 
-    // Resumed from format 1 to the end: the same results as a run never stopped, saved as format 2.
+    // Resumed from format 1 to the end: the same results as a run never stopped, saved in the current format.
     REQUIRE(run_morphogen("resume " + q(run) + " --generations 3").code == 0);
     const std::string after = read_text(path);
-    CHECK(nlohmann::json::parse(after.substr(0, header_end(after)))["version"] == 2);
+    CHECK(nlohmann::json::parse(after.substr(0, header_end(after)))["version"] == checkpoint_version);
     write_text(tmp.path / "whole.json", read_text(tmp.path / "small.json"));
     REQUIRE(run_morphogen("evolve " + q(tmp.path / "whole.json") + " --out " + q(tmp.path / "whole") +
                           " --generations 3")

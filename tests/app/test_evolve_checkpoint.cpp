@@ -121,9 +121,13 @@ TEST_CASE("other versions and formats and unfitting contents are refused with a 
 
     // The header line alone (format 2 puts the genomes after it).
     nlohmann::json document = nlohmann::json::parse(text.substr(0, text.find('\n')));
-    document["version"] = 3;
-    CHECK_THROWS_WITH(checkpoint_content(document.dump() + "\n", "v3"), Catch::Contains("version 3"));
-    document["version"] = 2;
+    document["version"] = checkpoint_version + 1;
+    CHECK_THROWS_WITH(checkpoint_content(document.dump() + "\n", "next"),
+                      Catch::Contains("version " + std::to_string(checkpoint_version + 1) +
+                                      " was written by a newer morphogen"));
+    document["version"] = 0;
+    CHECK_THROWS_WITH(checkpoint_content(document.dump() + "\n", "v0"), Catch::Contains("version 0 is not supported"));
+    document["version"] = checkpoint_version;
     document["format"] = "something-else";
     CHECK_THROWS_WITH(checkpoint_content(document.dump() + "\n", "f"), Catch::Contains("not a morphogen checkpoint"));
 

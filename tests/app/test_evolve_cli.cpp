@@ -203,8 +203,8 @@ TEST_CASE("a damaged or mismatched checkpoint is refused and left as it was", "[
     flipped[good.find('\n') + 12] ^= 1;  // a bit of a genome in the binary part
     expect_refusal(flipped, "hash");
     std::string version = good;
-    version.replace(version.find("\"version\":2"), 11, "\"version\":3");
-    expect_refusal(version, "version");
+    version.replace(version.find("\"version\":3"), 11, "\"version\":4");
+    expect_refusal(version, "version 4 was written by a newer morphogen");
 
     auto edited = nlohmann::json::parse(config);
     edited["evolution"]["mutation_sigma"] = 0.5;

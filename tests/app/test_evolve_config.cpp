@@ -319,10 +319,10 @@ TEST_CASE("map_elites configs: descriptors and archive are read, defaulted and c
     CHECK(schema_measures == descriptor_measure_names());
 }
 
-TEST_CASE("steady_state configs resolve to the same bytes as before map_elites existed", "[app][config][map_elites]") {
+TEST_CASE("steady_state configs resolve the algorithm and no MAP-Elites keys", "[app][config][map_elites]") {
     const ExperimentConfig plain = read_experiment_config(json::object(), "{}");
     CHECK(plain.algorithm == Algorithm::steady_state);
-    CHECK_FALSE(plain.resolved["evolution"].contains("algorithm"));
+    CHECK(plain.resolved["evolution"]["algorithm"] == "steady_state");
     CHECK_FALSE(plain.resolved.contains("descriptors"));
     CHECK_FALSE(plain.resolved.contains("archive"));
     const ExperimentConfig named = read_experiment_config(json{{"evolution", {{"algorithm", "steady_state"}}}}, "x");
@@ -346,7 +346,7 @@ TEST_CASE("a steady-state config may declare descriptors, only to record them", 
     CHECK(ga.qd.measure_names() == std::vector<std::string>{"height", "footprint", "width", "area"});  // no grid limit
     CHECK(ga.resolved["descriptors"][1] == json::parse(R"({"measure": "footprint", "min": 0, "max": 800, "bins": 10})"));
     CHECK_FALSE(ga.resolved.contains("archive"));
-    CHECK_FALSE(ga.resolved["evolution"].contains("algorithm"));
+    CHECK(ga.resolved["evolution"]["algorithm"] == "steady_state");
     // the same checks as for MAP-Elites, with key paths, all at once
     const std::string errors = config_errors(json::parse(R"({"descriptors": [
         {"measure": "heigth", "min": 0, "max": 1}, {"measure": "height", "min": 2, "max": 2}]})"));
@@ -440,8 +440,10 @@ TEST_CASE("growth.mode: the branching mode needs 7 outputs, and turn_rate only m
     CHECK_THAT(config_errors(json{{"growth", {{"turn_rate", 0.2}}}}),
                Catch::Contains("growth.turn_rate: is used only with growth.mode \"branching\""));
     CHECK_THAT(config_errors(json{{"growth", {{"mode", "branchy"}}}}), Catch::Contains("growth.mode"));
-    // The paper's mode resolves to the bytes it had before the key existed.
-    CHECK_FALSE(read_experiment_config(json{{"growth", {{"mode", "paper"}}}}, "p").resolved["growth"].contains("mode"));
+    // The paper's mode is recorded, without a turn rate.
+    const json paper = read_experiment_config(json::object(), "p").resolved["growth"];
+    CHECK(paper["mode"] == "paper");
+    CHECK_FALSE(paper.contains("turn_rate"));
     const json branching = read_experiment_config(json{{"growth", {{"mode", "branching"}}}}, "b").resolved["growth"];
     CHECK(branching["mode"] == "branching");
     CHECK(branching["turn_rate"] == 0.1);
@@ -482,7 +484,7 @@ TEST_CASE("run.threads far beyond the machine and the batch is capped, with a wa
     check_same_results(tmp.path / "many", tmp.path / "one");
 }
 
-TEST_CASE("the schedule: the pipeline by default, batch where a config sets batch, resolved to the same bytes",
+TEST_CASE("the schedule: the pipeline by default, batch where a config sets batch, always resolved",
           "[app][config][pipeline]") {
     // A new config: the pipeline, lag 64; no batch key in the resolved config.
     const ExperimentConfig fresh = read_experiment_config(json::object(), "x");
@@ -492,11 +494,11 @@ TEST_CASE("the schedule: the pipeline by default, batch where a config sets batc
     CHECK(fresh.resolved["evolution"]["lag"] == 64);
     CHECK_FALSE(fresh.resolved["evolution"].contains("batch"));
     // A config written for batches (every run made before the pipeline): batch,
-    // resolved exactly as before (no schedule, no lag key), and stable when read again.
+    // recorded, no lag key, and stable when read again.
     const ExperimentConfig old = read_experiment_config(json{{"evolution", {{"batch", 8}}}}, "x");
     CHECK(old.evolution.schedule == ScheduleKind::batch);
     CHECK(old.evolution.batch == 8);
-    CHECK_FALSE(old.resolved["evolution"].contains("schedule"));
+    CHECK(old.resolved["evolution"]["schedule"] == "batch");
     CHECK_FALSE(old.resolved["evolution"].contains("lag"));
     CHECK(read_experiment_config(old.resolved, "again").resolved == old.resolved);
     CHECK(read_experiment_config(fresh.resolved, "again").resolved == fresh.resolved);

@@ -104,7 +104,7 @@ TEST_CASE("tree fitness: config keys, defaults and errors", "[fitness][tree][con
     CHECK(resolved["loops_target"] == 3);
     CHECK(resolved["material_cost"] == 0.05);
     CHECK(resolved["root_height"] == 0.1);
-    CHECK_FALSE(resolved.contains("trunk_power"));  // 1 is left out: older runs resolve as they did
+    CHECK(resolved["trunk_power"] == 1.0);
     CHECK(resolved["min_height"] == 6.0);
     CHECK(resolved["elevations_deg"] == json::parse("[90.0, 45.0]"));
 

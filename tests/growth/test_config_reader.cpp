@@ -30,19 +30,22 @@ TEST_CASE("defaults fill an empty section and are recorded", "[config]") {
     CHECK(p.steps == 200);
     CHECK(reader.resolved()["split_area"] == 0.75);
     CHECK(reader.resolved()["seed_mesh"] == "icosahedron");
-    CHECK(reader.resolved().size() == 12);
+    CHECK(reader.resolved()["collisions"] == "allow");
+    CHECK(reader.resolved()["mode"] == "paper");
+    // every key but turn_rate, which the paper's mode does not use
+    CHECK(reader.resolved().size() == 14);
+    CHECK_FALSE(reader.resolved().contains("turn_rate"));
 }
 
 TEST_CASE("growth.collisions is allow or prevent", "[config]") {
     GrowthParams p;
     CHECK(read_growth(json::parse(R"({"collisions": "prevent"})"), &p).empty());
     CHECK(p.collisions == Collisions::prevent);
-    // The default resolves to nothing (configs and checkpoints keep their
-    // bytes); "prevent" is recorded.
+    // Either value is recorded, the default too.
     ConfigIssues issues;
     ObjectReader reader(nullptr, "growth", issues);
     CHECK(read_growth_params(reader).collisions == Collisions::allow);
-    CHECK_FALSE(reader.resolved().contains("collisions"));
+    CHECK(reader.resolved()["collisions"] == "allow");
     const json section = json::parse(R"({"collisions": "prevent"})");
     ObjectReader prevent(&section, "growth", issues);
     read_growth_params(prevent);

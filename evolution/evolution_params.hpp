@@ -1,0 +1,22 @@
+#pragma once
+// The `evolution` config section (docs/config.md): which search runs and the
+// parameters of the steady-state GA, read beside their struct with the
+// ObjectReader every section uses (base/config_reader.hpp).
+#include "base/config_reader.hpp"
+#include "evolution/ga_params.hpp"
+
+namespace morphogen {
+
+// evolution.algorithm: the steady-state GA (docs/algorithm.md §8) or
+// MAP-Elites (§9).
+enum class Algorithm { steady_state, map_elites };
+
+// Reads the section (problems go to reader.issues(), defaults fill gaps, every
+// value used is recorded in reader.resolved()) and calls reader.finish().
+// `algorithm` (if not null) receives evolution.algorithm. The schedule is
+// "batch" by default when the section sets `batch` (a config written for the
+// batch schedule keeps it) and "pipeline" otherwise; of `lag` and `batch` only
+// the one the schedule uses is resolved, and giving the other is an issue.
+GaParams read_evolution_params(ObjectReader& reader, Algorithm* algorithm = nullptr);
+
+}  // namespace morphogen
