@@ -71,8 +71,8 @@ TEST_CASE("a format-1 MAP-Elites config without emitters gets 0.1.0's gaussian e
     CHECK(migrated["emitters"] == json::parse(R"([{"kind": "gaussian", "selection": "uniform", "share": 1.0}])"));
     const ExperimentConfig config = read_experiment_config(migrated, "m");
     REQUIRE(config.qd.emitters.size() == 1);
-    CHECK(config.qd.emitters[0].kind == EmitterKind::gaussian);
-    CHECK(config.qd.emitters[0].selection == ParentSelection::uniform);
+    CHECK(config.qd.emitters[0].emitter->kind() == "gaussian");
+    CHECK(config.qd.emitters[0].emitter->selection() == ParentSelection::uniform);
     CHECK(holds_all_of(config.resolved, migrated));
 }
 
