@@ -1,6 +1,7 @@
 #include "evolution/batch.hpp"
 
 #include "evolution/pipeline.hpp"
+#include "evolution/worker_threads.hpp"
 
 #include <omp.h>
 
@@ -48,11 +49,9 @@ Evaluation evaluate_safely(const Problem& problem, std::span<const double> param
     return result;
 }
 
-int resolve_thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
-
 BredBatch breed_batch(Problem& problem, std::uint64_t first, std::size_t count, int threads,
                       const std::function<Individual(std::uint64_t birth)>& conceive) {
-    threads = resolve_thread_count(threads);
+    threads = resolve_threads(threads);
     problem.prepare(threads);
     BredBatch out;
     out.children.resize(count);

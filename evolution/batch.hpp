@@ -32,7 +32,7 @@ struct BredBatch {
 // Births [first, first + count): conceive(birth) makes each child (it must
 // only read state that stays unchanged during the call, and may run on any
 // thread), then the problem scores it with worker = the OpenMP thread number.
-// Calls problem.prepare(threads) first; threads <= 0 means OpenMP's default.
+// Calls problem.prepare(threads) first; threads as resolve_threads (worker_threads.hpp).
 // Failures outside evaluation (e.g. std::bad_alloc while conceiving) are
 // rethrown after the parallel region. Runs use BirthPipeline (pipeline.hpp);
 // this is the batch schedule's step for tests and tools.
@@ -44,8 +44,5 @@ BredBatch breed_batch(Problem& problem, std::uint64_t first, std::size_t count, 
 inline void keep_best(std::optional<Individual>& best, const Individual& child) {
     if (child.valid() && (!best || child.fitness > best->fitness)) best = child;
 }
-
-// The thread count breed_batch uses for `threads`.
-int resolve_thread_count(int threads);
 
 }  // namespace morphogen
