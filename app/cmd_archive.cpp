@@ -7,6 +7,7 @@
 #include "base/errors.hpp"
 #include "report/render.hpp"
 #include "run/checkpoint.hpp"
+#include "run/elites_search.hpp"
 #include "run/experiment_config.hpp"
 #include "run/growth_problem.hpp"
 #include "run/run_directory.hpp"
@@ -141,11 +142,12 @@ int run_archive(const ArchiveOptions& o) {
     const RunPaths paths = run_paths(o.dir);
     if (!fs::is_directory(paths.dir)) throw IoError("run directory " + o.dir + " does not exist");
     const RunState state = load_checkpoint(paths.checkpoint);
-    if (!state.elites)
+    const MapElitesState* run_elites = elites_state(*state.search);
+    if (run_elites == nullptr)
         throw ConfigError(o.dir + ": not a MAP-Elites run (evolution.algorithm is \"steady_state\"; its best meshes "
                                   "are in best/)");
     const ExperimentConfig config = read_experiment_config(state.config, paths.checkpoint.string());
-    const Archive& archive = state.elites->archive;
+    const Archive& archive = run_elites->archive;
     if (!o.png.empty() && archive.kind() != ArchiveKind::grid)
         throw ConfigError("--png: the map of elites is drawn for grid archives; this run's archive is a CVT");
     const GrowthProblem problem(config);

@@ -1,16 +1,15 @@
 // `morphogen evolve CONFIG`: checks the config, makes a new run directory and
-// runs the GA (evolution_run.hpp).
+// runs its search (evolution_run.hpp).
 #include "app/commands.hpp"
 #include "app/resource_options.hpp"
 #include "base/atomic_file.hpp"
 #include "report/end_of_run.hpp"
-#include "run/archive_csv.hpp"
 #include "run/evolution_run.hpp"
 #include "run/exit_codes.hpp"
 #include "run/run_records.hpp"
-#include "run/search_drivers.hpp"
+#include "run/run_search.hpp"
 #include "run/stop_signals.hpp"
-#include "run/worker_threads.hpp"
+#include "evolution/worker_threads.hpp"
 
 #include <chrono>
 #include <iostream>
@@ -26,6 +25,7 @@ struct EvolveOptions {
     bool force = false, no_report = false;
     CLI::Option *seed_option = nullptr, *generations_option = nullptr, *threads_option = nullptr;
     ResourceOptions resources;
+    EvaluatorFactory evaluators;
 };
 
 int run_evolve(const EvolveOptions& o) {
@@ -57,10 +57,11 @@ int run_evolve(const EvolveOptions& o) {
         log.both->info("{} held a run stopped before its first checkpoint; starting it again", paths.dir.string());
     write_file_atomically(paths.config, config.resolved.dump(2) + "\n");
 
+    const SearchKind& search = search_kind(config.algorithm);
     RunSession session{paths,
                        config,
                        RunState{},
-                       AppendFile::create(paths.history, history_header_for(config.algorithm == Algorithm::map_elites)),
+                       AppendFile::create(paths.history, history_header_for(search.qd_history)),
                        AppendFile::create(paths.lineage, lineage_header_for(config.qd.measure_names())),
                        std::move(log),
                        std::nullopt};
@@ -69,23 +70,25 @@ int run_evolve(const EvolveOptions& o) {
     session.state.seed = config.run.seed;
     session.state.lineage_bytes = session.lineage.size();
     session.state.lineage_hash = session.lineage.hash_hex();
-    if (config.algorithm == Algorithm::map_elites) {
-        session.state.elites = initial_elites_state(config, resolve_threads(config.run.threads), session.log.both.get());
-        if (!session.state.elites) {
-            session.log.both->warn("stopped by signal {} while placing the CVT centroids, before the first "
-                                   "checkpoint: nothing was lost; start it again with the same command",
-                                   StopSignals::signal_number());
-            return exit_code::interrupted;
-        }
-        write_file_atomically(paths.archive, archive_csv(session.state.elites->archive));
+    session.state.search = search.initial(config, resolve_threads(config.run.threads), session.log.both.get());
+    if (!session.state.search) {
+        session.log.both->warn("stopped by signal {} while the search's first state was made (the CVT centroids "
+                               "placed), before the first checkpoint: nothing was lost; start it again with the same "
+                               "command",
+                               StopSignals::signal_number());
+        return exit_code::interrupted;
     }
+    // archive.csv (a search that keeps one) before the checkpoint that refers to it.
+    if (const std::string archive = session.state.search->archive_text(); !archive.empty())
+        write_file_atomically(paths.archive, archive);
     save_checkpoint(paths.checkpoint, session.state);
-    return run_session_then_report(session, problem, !o.no_report);
+    return run_session_then_report(session, problem, o.evaluators, !o.no_report);
 }
 }  // namespace
 
-void add_evolve_command(CLI::App& root, CommandRunner& selected) {
+void add_evolve_command(CLI::App& root, CommandRunner& selected, EvaluatorFactory evaluators) {
     auto options = std::make_shared<EvolveOptions>();
+    options->evaluators = std::move(evaluators);
     CLI::App* cmd = root.add_subcommand("evolve", "Run the search of a config (the GA or MAP-Elites) into a new run directory");
     cmd->add_option("config", options->config, "experiment config (JSON)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", options->out, "run directory (default runs/<name>-<YYYYmmdd-HHMMSS>)");

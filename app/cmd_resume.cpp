@@ -6,12 +6,12 @@
 #include "base/config_reader.hpp"
 #include "base/errors.hpp"
 #include "report/end_of_run.hpp"
-#include "run/archive_csv.hpp"
 #include "run/checkpoint_checks.hpp"
 #include "run/config_migration.hpp"
 #include "run/evolution_run.hpp"
 #include "run/exit_codes.hpp"
 #include "run/run_records.hpp"
+#include "run/run_search.hpp"
 #include "run/stop_signals.hpp"
 
 #include <filesystem>
@@ -29,6 +29,7 @@ struct ResumeOptions {
     bool no_report = false;
     CLI::Option *generations_option = nullptr, *threads_option = nullptr;
     ResourceOptions resources;
+    EvaluatorFactory evaluators;
 };
 
 // The keys that decide a run's result must be the same in config.json and the
@@ -115,20 +116,22 @@ int run_resume(const ResumeOptions& o) {
     prepare_resumed_run_files(paths, state.history.size());
     if (config.resolved != on_disk) write_file_atomically(paths.config, config.resolved.dump(2) + "\n");
     // archive.csv is written just before each checkpoint: a stop between the two leaves a newer one.
-    if (state.elites) write_file_atomically(paths.archive, archive_csv(state.elites->archive));
-    std::string history_text = history_header_for(config.algorithm == Algorithm::map_elites);
+    if (const std::string archive = state.search->archive_text(); !archive.empty())
+        write_file_atomically(paths.archive, archive);
+    std::string history_text = history_header_for(search_kind(config.algorithm).qd_history);
     for (const HistoryRow& row : state.history) history_text += format_history_row(row);
     AppendFile history = AppendFile::create(paths.history, history_text);
     AppendFile lineage = AppendFile::resume(paths.lineage, state.lineage_bytes, state.lineage_hash);
     RunSession session{paths,           config, std::move(state), std::move(history), std::move(lineage),
                        std::move(log), lineage_descriptor_columns};
     session.log.both->info("resuming {} after {} births", o.dir, session.state.births());
-    return run_session_then_report(session, problem, !o.no_report);
+    return run_session_then_report(session, problem, o.evaluators, !o.no_report);
 }
 }  // namespace
 
-void add_resume_command(CLI::App& root, CommandRunner& selected) {
+void add_resume_command(CLI::App& root, CommandRunner& selected, EvaluatorFactory evaluators) {
     auto options = std::make_shared<ResumeOptions>();
+    options->evaluators = std::move(evaluators);
     CLI::App* cmd = root.add_subcommand("resume", "Continue a run from its checkpoint");
     cmd->add_option("dir", options->dir, "run directory")->required();
     options->generations_option =

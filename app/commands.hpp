@@ -2,6 +2,8 @@
 // One function per CLI verb registers its subcommand. When the user picks a
 // subcommand, its callback stores the work to do in `selected`; main() runs it
 // and maps exceptions to exit codes (exit_codes.hpp).
+#include "run/evolution_run.hpp"
+
 #include <CLI/CLI.hpp>
 
 #include <cstddef>
@@ -18,8 +20,9 @@ void add_grow_command(CLI::App& root, CommandRunner& selected);
 void add_gallery_command(CLI::App& root, CommandRunner& selected);
 void add_render_command(CLI::App& root, CommandRunner& selected);
 void add_bench_command(CLI::App& root, CommandRunner& selected);
-void add_evolve_command(CLI::App& root, CommandRunner& selected);
-void add_resume_command(CLI::App& root, CommandRunner& selected);
+// `evaluators` scores the genomes of their sessions (local_evaluator, or the MPI workers).
+void add_evolve_command(CLI::App& root, CommandRunner& selected, EvaluatorFactory evaluators);
+void add_resume_command(CLI::App& root, CommandRunner& selected, EvaluatorFactory evaluators);
 void add_validate_command(CLI::App& root, CommandRunner& selected);
 void add_score_command(CLI::App& root, CommandRunner& selected);
 void add_archive_command(CLI::App& root, CommandRunner& selected);

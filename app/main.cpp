@@ -45,12 +45,10 @@ int run_selected(const CommandRunner& selected) {
     }
 }
 
-// Rank 0 of a job of several processes: runs the command with its genomes
-// scored by the workers, then tells every worker to exit with its code.
+// Rank 0 of a job of several processes: runs the command (its genomes scored
+// by the workers: remote_evaluators), then tells every worker to exit with
+// its code.
 int run_rank0(cluster::World& world, const CommandRunner& selected) {
-    set_remote_evaluator_factory([&world](const ExperimentConfig& config, const std::filesystem::path& dir) {
-        return std::make_unique<cluster::RemoteEvaluator>(world, config, dir);
-    });
     const int code = run_selected(selected);
     try {
         for (int w = 1; w < world.size(); ++w) world.send(w, cluster::tag_quit, cluster::encode_int(code));
@@ -94,13 +92,16 @@ int main(int argc, char** argv) {
     CLI::App app{"morphogen: evolve 3-D shapes grown by a cellular neural network"};
     app.set_version_flag("--version", "morphogen 0.1.0");
     app.require_subcommand(1);
+    // Rank 0 of several has the workers score its genomes; one process scores its own.
+    const EvaluatorFactory evaluators =
+        several && !worker ? cluster::remote_evaluators(*world) : EvaluatorFactory(local_evaluator);
     CommandRunner selected;
     add_grow_command(app, selected);
     add_gallery_command(app, selected);
     add_render_command(app, selected);
     add_bench_command(app, selected);
-    add_evolve_command(app, selected);
-    add_resume_command(app, selected);
+    add_evolve_command(app, selected, evaluators);
+    add_resume_command(app, selected, evaluators);
     add_validate_command(app, selected);
     add_score_command(app, selected);
     add_archive_command(app, selected);

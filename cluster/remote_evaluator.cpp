@@ -171,4 +171,10 @@ void RemoteEvaluator::cancel() {
     world_.flush();
 }
 
+EvaluatorFactory remote_evaluators(World& world) {
+    return [&world](const RunSession& session, GrowthProblem&) {
+        return SessionEvaluator{std::make_unique<RemoteEvaluator>(world, session.config, session.paths.dir), true};
+    };
+}
+
 }  // namespace morphogen::cluster

@@ -12,6 +12,7 @@
 // genome never changes a result.
 #include "cluster/world.hpp"
 #include "evolution/genome_evaluator.hpp"
+#include "run/evolution_run.hpp"
 #include "run/experiment_config.hpp"
 
 #include <deque>
@@ -65,5 +66,9 @@ private:
     double wait_wall_ = 0, wait_cpu_ = 0;    // inside next()
     std::uint64_t genomes_ = 0;
 };
+
+// The evaluators of rank 0's sessions: a RemoteEvaluator over `world` (which
+// outlives every session) for each.
+EvaluatorFactory remote_evaluators(World& world);
 
 }  // namespace morphogen::cluster

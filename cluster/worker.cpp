@@ -4,7 +4,7 @@
 #include "evolution/thread_evaluator.hpp"
 #include "run/experiment_config.hpp"
 #include "run/growth_problem.hpp"
-#include "run/worker_threads.hpp"
+#include "evolution/worker_threads.hpp"
 
 #include <nlohmann/json.hpp>
 

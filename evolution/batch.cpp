@@ -45,6 +45,5 @@ Evaluation evaluate_safely(const Problem& problem, std::span<const double> param
     return result;
 }
 
-int resolve_thread_count(int threads) { return threads > 0 ? threads : omp_get_max_threads(); }
 
 }  // namespace morphogen

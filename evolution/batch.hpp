@@ -26,7 +26,4 @@ inline void keep_best(std::optional<Individual>& best, const Individual& child) 
     if (child.valid() && (!best || child.fitness > best->fitness)) best = child;
 }
 
-// `threads`, or the machine's (OpenMP's default) for threads <= 0.
-int resolve_thread_count(int threads);
-
 }  // namespace morphogen

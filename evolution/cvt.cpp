@@ -1,6 +1,7 @@
 #include "evolution/cvt.hpp"
 
 #include "evolution/rng.hpp"
+#include "evolution/worker_threads.hpp"
 
 #include <omp.h>
 
@@ -36,7 +37,7 @@ std::vector<double> cvt_centroids(std::uint64_t seed, std::uint64_t cells, std::
         throw std::invalid_argument("a CVT archive places 1 to " + std::to_string(kMaxCvtCells) + " cells, not " +
                                     std::to_string(cells));
     if (dimensions < 1) throw std::invalid_argument("a CVT archive needs at least one descriptor");
-    if (threads <= 0) threads = omp_get_max_threads();
+    threads = resolve_threads(threads);
     const auto k = static_cast<std::size_t>(cells);
     const std::size_t count = std::max(kCvtMinSamples, kCvtSamplesPerCell * k);
 

@@ -11,8 +11,13 @@ namespace morphogen {
 
 namespace fs = std::filesystem;
 
-int run_session_then_report(RunSession& session, GrowthProblem& problem, bool with_report) {
-    const int code = run_session(session, problem);
+int run_session_then_report(RunSession& session, GrowthProblem& problem, const EvaluatorFactory& evaluators,
+                            bool with_report) {
+    int code = 0;
+    {
+        SessionEvaluator evaluator = evaluators(session, problem);
+        code = run_session(session, problem, evaluator);
+    }
     if (code == exit_code::ok && with_report) report_at_end_of_run(session.paths.dir);
     return code;
 }

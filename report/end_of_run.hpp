@@ -8,9 +8,11 @@
 
 namespace morphogen {
 
-// run_session, then (when it completed the run and `with_report`)
+// run_session with the evaluator `evaluators` makes (gone before the
+// report), then (when it completed the run and `with_report`)
 // report_at_end_of_run. Returns run_session's exit code.
-int run_session_then_report(RunSession& session, GrowthProblem& problem, bool with_report);
+int run_session_then_report(RunSession& session, GrowthProblem& problem, const EvaluatorFactory& evaluators,
+                            bool with_report);
 
 // The report into RUN_DIR/report with default options. A failure does not
 // fail the run: it is printed (with the command that writes the report

@@ -9,6 +9,7 @@
 #include "report/report_assets.hpp"
 #include "report/report_data.hpp"
 #include "run/checkpoint.hpp"
+#include "run/elites_search.hpp"
 #include "run/experiment_config.hpp"
 #include "run/growth_problem.hpp"
 #include "run/run_directory.hpp"
@@ -356,8 +357,7 @@ void animation_json(Reporter& r, const ExperimentConfig& config, const Individua
 
 // The best so far, its mesh, its ancestry and its growth animation.
 void best_json(Reporter& r, const RunInputs& in, Pictures& pictures, LazyGrowth& growth) {
-    const bool qd = in.config.algorithm == Algorithm::map_elites;
-    const std::optional<Individual>& best = qd ? in.state.elites->best : in.state.ga.best;
+    const std::optional<Individual>& best = in.state.search->best();
     json& d = r.data;
     d["best"] = nullptr;
     d["ancestry"] = json::array();
@@ -431,8 +431,8 @@ void write_report_files(Reporter& r, const fs::path& run_dir, const RunInputs& i
     LazyGrowth growth(r, in.config);
     best_json(r, in, pictures, growth);
     sheet_json(r, in, pictures);
-    const bool qd = in.config.algorithm == Algorithm::map_elites;
-    r.data["elites"] = qd ? elites_json(r, in.state.elites->archive, growth) : json();
+    const MapElitesState* elites = elites_state(*in.state.search);
+    r.data["elites"] = elites != nullptr ? elites_json(r, elites->archive, growth) : json();
     const bool have_three = copy_three(r, r.out / "lib");
     r.data["three"] = have_three;
     r.data["notes"] = r.summary.notes;

@@ -3,15 +3,14 @@
 #include "base/atomic_file.hpp"
 #include "base/errors.hpp"
 #include "base/json_text.hpp"
-#include "evolution/emitter_state_json.hpp"
 #include "evolution/ga_state_json.hpp"
 #include "evolution/genome_blob.hpp"
-#include "evolution/map_elites_state_json.hpp"
 #include "growth/network.hpp"
 #include "run/checkpoint_checks.hpp"
 #include "run/config_migration.hpp"
 #include "run/experiment_config.hpp"
 #include "run/fnv_hash.hpp"
+#include "run/run_search.hpp"
 
 #include <stdexcept>
 #include <string_view>
@@ -25,6 +24,7 @@ constexpr const char* format_name = "morphogen-checkpoint";
 constexpr const char* genome_encoding = "f64le";
 
 json content_of(const RunState& s, GenomeBlobWriter* genomes) {
+    if (!s.search) throw std::logic_error("a checkpoint needs the search's state");
     json history = json::array();
     for (const HistoryRow& row : s.history) history.push_back(history_row_to_json(row));
     json content{{"config", s.config},
@@ -32,10 +32,8 @@ json content_of(const RunState& s, GenomeBlobWriter* genomes) {
                  {"history", std::move(history)},
                  {"lineage", {{"bytes", s.lineage_bytes}, {"hash", s.lineage_hash}}},
                  {"elapsed_s", s.elapsed_s}};
-    if (s.elites)
-        content["map_elites"] = map_elites_state_to_json(*s.elites, genomes);
-    else
-        content["ga"] = ga_state_to_json(s.ga, genomes);
+    // The search's genomes before the pending births': the binary part's order.
+    content[s.search->key()] = s.search->to_json(genomes);
     if (!s.pending.empty()) {
         json pending = json::array();
         for (const Individual& child : s.pending) pending.push_back(individual_to_json(child, genomes));
@@ -92,16 +90,12 @@ std::string sealed_format2(const json& content, std::string_view genomes, std::u
     return out;
 }
 
-// Genomes a state holds (elites or population, and the best), for reserving.
+// Genomes a state holds (its members and best, and the pending births), for reserving.
 std::size_t genome_doubles(const RunState& s) {
-    if (s.elites) {
-        const auto& elites = s.elites->archive.elites();
-        const std::size_t D = s.elites->best ? s.elites->best->params.size() : 0;
-        return (elites.size() + 1 + s.pending.size()) * D;
-    }
-    const std::size_t D = s.ga.best ? s.ga.best->params.size()
-                                    : (s.ga.population.empty() ? 0 : s.ga.population.front().params.size());
-    return (s.ga.population.size() + 1 + s.pending.size()) * D;
+    if (!s.search) return 0;
+    const SearchView v = s.search->view();
+    const std::size_t D = *v.best ? (*v.best)->params.size() : (v.members.empty() ? 0 : v.members.front()->params.size());
+    return (v.members.size() + 1 + s.pending.size()) * D;
 }
 
 // A verified envelope: the content as stored and, from format 2, the binary part
@@ -204,25 +198,12 @@ void inline_genome(json& individual, GenomeBlobReader& genomes, const std::strin
 }
 
 void inline_genomes(json& content, GenomeBlobReader& genomes) {
-    auto each = [&](json& parent, const char* key, const std::string& path) {
-        if (!parent.is_object() || !parent.contains(key) || !parent[key].is_array()) return;
-        json& list = parent[key];
-        for (std::size_t i = 0; i < list.size(); ++i) inline_genome(list[i], genomes, path + "[" + std::to_string(i) + "]");
-    };
-    if (content.contains("ga") && content["ga"].is_object()) {
-        json& ga = content["ga"];
-        each(ga, "population", "ga.population");
-        if (ga.contains("best")) inline_genome(ga["best"], genomes, "ga.best");
-    }
-    if (content.contains("map_elites") && content["map_elites"].is_object()) {
-        json& me = content["map_elites"];
-        if (me.contains("archive")) each(me["archive"], "elites", "map_elites.archive.elites");
-        if (me.contains("best")) inline_genome(me["best"], genomes, "map_elites.best");
-        if (me.contains("emitters"))
-            for_each_emitter_vector(me["emitters"], "map_elites.emitters",
-                                    [&](json& holder, const std::string& path) { inline_genome(holder, genomes, path); });
-    }
-    each(content, "pending", "pending");
+    const auto inline_one = [&](json& individual, const std::string& path) { inline_genome(individual, genomes, path); };
+    for (const SearchKind& kind : search_kinds())
+        if (content.contains(kind.key)) kind.each_genome(content[kind.key], inline_one);
+    if (content.contains("pending") && content["pending"].is_array())
+        for (std::size_t i = 0; i < content["pending"].size(); ++i)
+            inline_genome(content["pending"][i], genomes, "pending[" + std::to_string(i) + "]");
     genomes.check_all_taken("the checkpoint");
 }
 }  // namespace
@@ -326,20 +307,17 @@ RunState load_checkpoint(const std::filesystem::path& path) {
                 state.pending.push_back(
                     individual_from_json(pending[i], dimension, "pending[" + std::to_string(i) + "]", genomes));
         }
-        if (config.algorithm == Algorithm::map_elites) {
-            if (!content.contains("map_elites")) throw refuse("its config is a map_elites run but it holds no map_elites state");
-            state.elites = map_elites_state_from_json(content.at("map_elites"), config.qd.archive, config.qd.descriptors,
-                                                      config.qd.cells(), P, dimension, config.qd.emitters, genomes);
-        } else {
-            state.ga = ga_state_from_json(content.at("ga"), config.evolution, dimension, genomes);
-        }
+        const SearchKind& search = search_kind(config.algorithm);
+        if (!content.contains(search.key))
+            throw refuse(std::string("its config is a ") + algorithm_name(config.algorithm) + " run but it holds no " +
+                         search.key + " state");
+        state.search = search.load(content.at(search.key), config, dimension, genomes);
         for (const json& row : content.at("history")) state.history.push_back(history_row_from_json(row));
         if (state.history.size() != state.births() / P)
             throw refuse(std::to_string(state.history.size()) + " history rows for " +
                          std::to_string(state.births()) + " births");
         for (const HistoryRow& row : state.history)
-            if (row.qd != (config.algorithm == Algorithm::map_elites))
-                throw refuse("its history rows do not fit its algorithm");
+            if (row.qd != search.qd_history) throw refuse("its history rows do not fit its algorithm");
         for (std::size_t g = 0; g < state.history.size(); ++g)
             if (state.history[g].generation != g) throw refuse("history rows out of order");
         state.lineage_bytes = content.at("lineage").at("bytes").get<std::uint64_t>();

@@ -1,7 +1,5 @@
 #include "run/checkpoint_checks.hpp"
 
-#include "evolution/archive_stats.hpp"
-#include "evolution/operators.hpp"
 #include "evolution/population_stats.hpp"
 #include "evolution/schedule.hpp"
 #include "growth/network.hpp"
@@ -33,34 +31,9 @@ bool same(const Individual& a, const Individual& b) {
            (a.fitness == b.fitness || (!a.valid() && !b.valid())) && a.size == b.size;
 }
 
-// What the checks need of either algorithm's state.
-struct SearchView {
-    std::string name;  // "ga" | "map_elites"
-    std::uint64_t births = 0;
-    const std::optional<Individual>* best = nullptr;
-    std::vector<const Individual*> members;  // the population, or the archive's elites in cell order
-    std::string members_name;                // "ga.population" | "map_elites.archive.elites"
-    std::uint64_t invalid_in_generation = 0;
-};
-
 SearchView view_of(const RunState& s) {
-    SearchView v;
-    if (s.elites) {
-        v.name = "map_elites";
-        v.births = s.elites->births;
-        v.best = &s.elites->best;
-        for (const auto& [cell, elite] : s.elites->archive.elites()) v.members.push_back(&elite);
-        v.members_name = "map_elites.archive.elites";
-        v.invalid_in_generation = s.elites->invalid_in_generation;
-    } else {
-        v.name = "ga";
-        v.births = s.ga.births;
-        v.best = &s.ga.best;
-        for (const Individual& m : s.ga.population) v.members.push_back(&m);
-        v.members_name = "ga.population";
-        v.invalid_in_generation = s.ga.invalid_in_generation;
-    }
-    return v;
+    if (!s.search) throw std::logic_error("a checkpoint's content needs the search's state");
+    return s.search->view();
 }
 
 void check_history(const RunState& s, std::uint64_t P) {
@@ -83,7 +56,8 @@ void check_history(const RunState& s, std::uint64_t P) {
                 contradiction(where + ": worst, median and best are not in order");
             if (!(*row.mean_vertices >= 0)) contradiction(where + ".mean_vertices is negative");
             if (!*v.best || *row.best > (*v.best)->fitness)
-                contradiction(where + ".best is better than the best individual ever born (" + v.name + ".best)");
+                contradiction(where + ".best is better than the best individual ever born (" + std::string(s.search->key()) +
+                              ".best)");
         }
         if (!std::isfinite(row.births_per_s) || row.births_per_s < 0)
             contradiction(where + ".births_per_s is " + format_number(row.births_per_s) + ", not a rate >= 0");
@@ -172,6 +146,32 @@ std::uint64_t invalid_between(const std::vector<LineageRow>& rows, std::uint64_t
     return invalid;
 }
 
+// The checkpoint is taken at a generation's end, so its last history row
+// summarises the population (or the archive) it holds.
+void check_last_row(const RunState& s, const ExperimentConfig& config, std::uint64_t P) {
+    if (s.history.empty() || s.births() != s.history.size() * P) return;
+    const std::size_t g = s.history.size() - 1;
+    const HistoryRow& row = s.history[g];
+    HistoryRow expected;
+    s.search->fill(expected, config);
+    const std::string source = view_of(s).members_source;
+    check_row_stats(row, g, {expected.best, expected.mean, expected.median, expected.worst, expected.mean_vertices},
+                    true, source);
+    if (expected.qd && (row.coverage != expected.coverage || row.qd_score != expected.qd_score))
+        contradiction(at("history", g) + " has coverage " + format_number(row.coverage) + " and qd_score " +
+                      format_number(row.qd_score) + ", but " + source + " gives " + format_number(expected.coverage) +
+                      " and " + format_number(expected.qd_score));
+}
+
+// One entry per birth of lineage.csv, for the search's own checks.
+std::vector<RecordedBirth> recorded_births(const std::vector<LineageRow>& rows) {
+    std::vector<RecordedBirth> recorded;
+    recorded.reserve(rows.size());
+    for (const LineageRow& row : rows) recorded.push_back({row.valid, row.fitness});
+    return recorded;
+}
+}  // namespace
+
 // A history row's fitness columns (and, with `sizes`, its mean vertices)
 // against the statistics of the members they summarise.
 void check_row_stats(const HistoryRow& row, std::size_t g, const PopulationStats& stats, bool sizes,
@@ -189,88 +189,6 @@ void check_row_stats(const HistoryRow& row, std::size_t g, const PopulationStats
     check("worst", row.worst, stats.worst);
     if (sizes) check("mean_vertices", row.mean_vertices, stats.mean_size);
 }
-
-// The checkpoint is taken at a generation's end, so its last history row
-// summarises the population (or the archive) it holds.
-void check_last_row(const RunState& s, const ExperimentConfig& config, std::uint64_t P) {
-    if (s.history.empty() || s.births() != s.history.size() * P) return;
-    const std::size_t g = s.history.size() - 1;
-    const HistoryRow& row = s.history[g];
-    if (!s.elites) {
-        check_row_stats(row, g, summarize(s.ga.population), true, "the population it holds");
-        return;
-    }
-    const ArchiveStats stats = archive_stats(s.elites->archive, config.qd.qd_offset);
-    check_row_stats(row, g, stats.fitness, true, "the archive it holds");
-    if (row.coverage != stats.coverage || row.qd_score != stats.qd_score)
-        contradiction(at("history", g) + " has coverage " + format_number(row.coverage) + " and qd_score " +
-                      format_number(row.qd_score) + ", but the archive it holds gives " +
-                      format_number(stats.coverage) + " and " + format_number(stats.qd_score));
-}
-
-// The GA's population at every generation's end, replayed from lineage.csv's
-// fitness column with the GA's own insertion rule (insert_child): every
-// history row's fitness columns must be its statistics.
-void check_history_by_replay(const RunState& s, const std::vector<LineageRow>& rows, std::uint64_t P) {
-    std::vector<Individual> population;
-    population.reserve(P);
-    for (std::size_t g = 0; g < s.history.size() && (g + 1) * P <= rows.size(); ++g) {
-        for (std::uint64_t id = g * P; id < (g + 1) * P; ++id) {
-            Individual child;
-            child.id = id;
-            child.fitness = rows[id].valid ? rows[id].fitness : invalid_fitness;
-            insert_child(population, std::move(child), P);
-        }
-        check_row_stats(s.history[g], g, summarize(population), false, "the population lineage.csv records");
-    }
-}
-// The parents of every pending birth, which the checkpoint's hash alone does
-// not protect. GA: the population at the birth's source state is replayed
-// from lineage.csv's fitness column (insert_child, as above) and the birth's
-// parents re-drawn from it with the birth's own stream (conceive; the
-// replayed members carry zero parameters, and the draws that pick parents do
-// not read parameters): they must be exactly the stored ones, in order.
-// MAP-Elites: an emitter's parent is an elite, so a valid birth recorded
-// before the source state.
-void check_pending_parents(const RunState& s, const std::vector<LineageRow>& rows, const BirthReplay& replay,
-                           const BirthSchedule& schedule) {
-    const auto P = static_cast<std::uint64_t>(replay.params.population);
-    if (s.elites) {
-        for (std::size_t i = 0; i < s.pending.size(); ++i) {
-            const Individual& child = s.pending[i];
-            const std::uint64_t source = schedule.source(child.id);
-            for (const std::optional<std::uint64_t>& parent : {child.parent1, child.parent2})
-                if (parent && (*parent >= source || *parent >= rows.size() || !rows[*parent].valid))
-                    contradiction(at("pending", i) + " (birth " + std::to_string(child.id) + ") has parent " +
-                                  std::to_string(*parent) + ", not a valid birth before its source state (" +
-                                  std::to_string(source) + " births) in lineage.csv");
-        }
-        return;
-    }
-    std::vector<Individual> population;
-    population.reserve(P);
-    std::uint64_t replayed = 0;
-    for (std::size_t i = 0; i < s.pending.size(); ++i) {
-        const Individual& child = s.pending[i];
-        const std::uint64_t source = schedule.source(child.id);
-        for (; replayed < source && replayed < rows.size(); ++replayed) {
-            Individual member;
-            member.id = replayed;
-            member.fitness = rows[replayed].valid ? rows[replayed].fitness : invalid_fitness;
-            member.params.assign(replay.dimension, 0.0);
-            insert_child(population, std::move(member), P);
-        }
-        const Individual expected =
-            conceive(population, replay.params, replay.blocks, replay.dimension, replay.seed, child.id);
-        if (expected.parent1 != child.parent1 || expected.parent2 != child.parent2) {
-            const auto text = [](const std::optional<std::uint64_t>& p) { return p ? std::to_string(*p) : "null"; };
-            contradiction(at("pending", i) + " (birth " + std::to_string(child.id) + ") has parents " +
-                          text(child.parent1) + ", " + text(child.parent2) + "; the population lineage.csv records at " +
-                          "its source state gives " + text(expected.parent1) + ", " + text(expected.parent2));
-        }
-    }
-}
-}  // namespace
 
 BirthReplay birth_replay(const ExperimentConfig& config) {
     const std::vector<int> layers = config.network.layers();
@@ -303,11 +221,12 @@ void check_pending(const RunState& s, const ExperimentConfig& config, std::uint6
 void check_checkpoint_content(const RunState& s, const ExperimentConfig& config) {
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
     const SearchView v = view_of(s);
+    const std::string name = s.search->key();
     const std::uint64_t births = v.births;
     if (!std::isfinite(s.elapsed_s) || s.elapsed_s < 0)
         contradiction("elapsed_s is " + format_number(s.elapsed_s) + ", not a duration >= 0");
     if (births > (config.run.generations + 1) * P)
-        contradiction(v.name + ".births is " + std::to_string(births) + ", beyond the " +
+        contradiction(name + ".births is " + std::to_string(births) + ", beyond the " +
                       std::to_string((config.run.generations + 1) * P) + " births of its run.generations " +
                       std::to_string(config.run.generations));
     if (s.lineage_bytes < std::string_view(lineage_header).size())
@@ -316,26 +235,25 @@ void check_checkpoint_content(const RunState& s, const ExperimentConfig& config)
         contradiction("lineage.hash is not 16 lower-case hex digits");
 
     const std::optional<Individual>& best = *v.best;
-    if (best) check_size(*best, v.name + ".best");
+    if (best) check_size(*best, name + ".best");
     bool any_valid = false;
     for (std::size_t i = 0; i < v.members.size(); ++i) {
         const Individual& member = *v.members[i];
         const std::string where = at(v.members_name.c_str(), i);
         check_size(member, where);
-        if (!s.elites && births <= P && (member.id != i || member.parent1))
+        if (v.members_are_first_births && births <= P && (member.id != i || member.parent1))
             contradiction(where + ": in generation 0 slot " + std::to_string(i) + " holds birth " +
                           std::to_string(i) + ", which has no parents");
         any_valid = any_valid || member.valid();
         if (best && member.valid() && member.fitness > best->fitness)
-            contradiction(where + " (id " + std::to_string(member.id) + ") is better than " + v.name + ".best");
+            contradiction(where + " (id " + std::to_string(member.id) + ") is better than " + name + ".best");
         if (best && member.id == best->id && !(same(member, *best) && member.descriptors == best->descriptors))
-            contradiction(where + " has " + v.name + ".best's id " + std::to_string(member.id) + " but differs from it");
+            contradiction(where + " has " + name + ".best's id " + std::to_string(member.id) + " but differs from it");
     }
-    if (any_valid && !best) contradiction(v.name + ".best is null though the population has valid members");
-    if (s.elites)
-        for (const HistoryRow& row : s.history)
-            if (row.new_cells > P || row.coverage > 1.0)
-                contradiction("history: new_cells or coverage out of range in generation " + std::to_string(row.generation));
+    if (any_valid && !best) contradiction(name + ".best is null though the population has valid members");
+    for (const HistoryRow& row : s.history)
+        if (row.new_cells > P || row.coverage > 1.0)
+            contradiction("history: new_cells or coverage out of range in generation " + std::to_string(row.generation));
     check_history(s, P);
     check_last_row(s, config, P);
     check_pending(s, config, births);
@@ -344,19 +262,20 @@ void check_checkpoint_content(const RunState& s, const ExperimentConfig& config)
 void check_checkpoint_against_lineage(const RunState& s, std::string_view lineage, std::uint64_t P,
                                       std::string_view header, const BirthReplay* pending_parents) {
     const SearchView v = view_of(s);
+    const std::string name = s.search->key();
     const std::optional<Individual>& best = *v.best;
-    const std::vector<LineageRow> rows = parse_lineage(lineage, v.births, v.name, header);
+    const std::vector<LineageRow> rows = parse_lineage(lineage, v.births, name, header);
     for (std::size_t i = 0; i < v.members.size(); ++i) check_recorded(*v.members[i], rows, at(v.members_name.c_str(), i));
     const LineageRow* first_best = nullptr;
     for (const LineageRow& row : rows)
         if (row.valid && (first_best == nullptr || row.fitness > first_best->fitness)) first_best = &row;
     if (best) {
-        check_recorded(*best, rows, v.name + ".best");
+        check_recorded(*best, rows, name + ".best");
         if (first_best == nullptr || first_best->id != best->id)
-            contradiction(v.name + ".best (id " + std::to_string(best->id) +
+            contradiction(name + ".best (id " + std::to_string(best->id) +
                           ") is not the first birth of the highest fitness in lineage.csv");
     } else if (first_best != nullptr) {
-        contradiction(v.name + ".best is null but lineage.csv records valid birth " + std::to_string(first_best->id));
+        contradiction(name + ".best is null but lineage.csv records valid birth " + std::to_string(first_best->id));
     }
     for (std::size_t g = 0; g < s.history.size(); ++g) {
         const std::uint64_t invalid = invalid_between(rows, g * P, (g + 1) * P);
@@ -365,11 +284,13 @@ void check_checkpoint_against_lineage(const RunState& s, std::string_view lineag
                           ", lineage.csv records " + std::to_string(invalid) + " invalid births in generation " +
                           std::to_string(g));
     }
-    if (!s.elites) check_history_by_replay(s, rows, P);
-    if (pending_parents != nullptr) check_pending_parents(s, rows, *pending_parents, birth_schedule(pending_parents->params));
+    const std::vector<RecordedBirth> recorded = recorded_births(rows);
+    s.search->check_history(s.history, recorded, P);
+    if (pending_parents != nullptr)
+        s.search->check_pending_parents(s.pending, recorded, *pending_parents, birth_schedule(pending_parents->params));
     const std::uint64_t current = s.history.size() * P;
     if (v.invalid_in_generation != invalid_between(rows, current, v.births))
-        contradiction(v.name + ".invalid_in_generation is " + std::to_string(v.invalid_in_generation) +
+        contradiction(name + ".invalid_in_generation is " + std::to_string(v.invalid_in_generation) +
                       ", lineage.csv records " + std::to_string(invalid_between(rows, current, v.births)));
 }
 

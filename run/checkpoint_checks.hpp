@@ -4,10 +4,13 @@
 // the envelope check (checkpoint.hpp), so every field is checked against the
 // others here. Each check throws std::invalid_argument saying which field
 // contradicts what; callers turn that into a refused checkpoint (exit 5).
+#include "evolution/population_stats.hpp"
 #include "run/experiment_config.hpp"
 #include "run/run_records.hpp"
 #include "run/run_state.hpp"
 
+#include <cstddef>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -27,21 +30,20 @@ void check_checkpoint_content(const RunState& state, const ExperimentConfig& con
 // record them (id to fitness; the descriptors too where the state holds
 // them, as MAP-Elites elites do); the best the first of the highest fitness;
 // the invalid births of every generation (history) and of the current one.
-// With `pending_parents`, also the parents of every pending birth
-// (check_pending_parents).
-struct BirthReplay;
+// The search's own checks (SearchState::check_history). With
+// `pending_parents`, also the parents of every pending birth
+// (SearchState::check_pending_parents).
 void check_checkpoint_against_lineage(const RunState& state, std::string_view lineage, std::uint64_t population,
                                       std::string_view header = lineage_header,
                                       const BirthReplay* pending_parents = nullptr);
 
-// What re-drawing a birth's parents needs (docs/algorithm.md §8.2): the GA's
-// parameters, the run's seed and the genome's blocks and length.
-struct BirthReplay {
-    GaParams params;
-    std::uint64_t seed = 0;
-    std::vector<Block> blocks;
-    std::size_t dimension = 0;
-};
+// What re-drawing a birth's parents needs, for `config`'s run.
 BirthReplay birth_replay(const ExperimentConfig& config);
+
+// A history row's fitness columns (and, with `sizes`, its mean vertices)
+// against the statistics of the members they summarise, which `source`
+// names ("the population it holds"); for the searches' own checks.
+void check_row_stats(const HistoryRow& row, std::size_t generation, const PopulationStats& stats, bool sizes,
+                     const std::string& source);
 
 }  // namespace morphogen

@@ -7,7 +7,7 @@
 #include "fitness/light.hpp"
 #include "fitness/tree_fitness.hpp"
 #include "growth/network.hpp"
-#include "run/worker_threads.hpp"
+#include "evolution/worker_threads.hpp"
 
 #include <unistd.h>
 

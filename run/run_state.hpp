@@ -2,14 +2,13 @@
 // What a run has done so far: the search's state, the history rows, how far
 // lineage.csv goes. Saved and read back by checkpoint.hpp, checked by
 // checkpoint_checks.hpp.
-#include "evolution/map_elites.hpp"
-#include "evolution/steady_state.hpp"
+#include "evolution/individual.hpp"
 #include "run/run_records.hpp"
+#include "run/search_state.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,8 +17,9 @@ namespace morphogen {
 struct RunState {
     nlohmann::json config;  // the resolved config
     std::uint64_t seed = 0; // == config.run.seed; stored on its own for readers
-    GaState ga;                          // steady_state runs ("ga" in the content)
-    std::optional<MapElitesState> elites; // map_elites runs ("map_elites" in the content, instead of "ga")
+    // The search's state (run_search.hpp), under its key in the content
+    // ("ga", "map_elites"); empty only before a run's first state is made.
+    HeldSearchState search;
     // Births conceived from a state before this one and not yet inserted
     // (evolution/schedule.hpp: kept_begin..kept_end), in birth order, not
     // evaluated; "pending" in the content, absent when empty.
@@ -29,7 +29,7 @@ struct RunState {
     std::string lineage_hash;         // FNV-1a 64 (hex) of those bytes
     double elapsed_s = 0.0;           // run time so far, over all sessions
 
-    std::uint64_t births() const { return elites ? elites->births : ga.births; }
+    std::uint64_t births() const { return search ? search->births() : 0; }
 };
 
 }  // namespace morphogen

@@ -12,6 +12,7 @@
 #include "run/experiment_config.hpp"
 #include "run/run_records.hpp"
 #include "tests/app/evolve_test_support.hpp"
+#include "tests/app/search_states.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -78,11 +79,12 @@ RunState generation0_state(const std::string& config_text, std::uint64_t members
             born[i].descriptors = {static_cast<double>(i / 100) + 0.5, static_cast<double>(i % 100) + 0.5};
             archive.restore(i, born[i]);
         }
-        state.elites = MapElitesState{members, std::move(archive), *best, 0, members, fresh_emitters(config.qd.emitters)};
+        state.search = std::make_unique<ElitesSearchState>(
+            MapElitesState{members, std::move(archive), *best, 0, members, fresh_emitters(config.qd.emitters)});
     } else {
-        state.ga.births = members;
-        state.ga.best = *best;
-        state.ga.population = std::move(born);
+        ga_of(state).births = members;
+        ga_of(state).best = *best;
+        ga_of(state).population = std::move(born);
     }
     return state;
 }
@@ -106,10 +108,10 @@ std::string format1_text(const RunState& s) {
                            {"history", std::move(history)},
                            {"lineage", {{"bytes", s.lineage_bytes}, {"hash", s.lineage_hash}}},
                            {"elapsed_s", s.elapsed_s}};
-    if (s.elites)
-        content["map_elites"] = map_elites_state_to_json(*s.elites);
+    if (const MapElitesState* elites = elites_state(*s.search))
+        content["map_elites"] = map_elites_state_to_json(*elites);
     else
-        content["ga"] = ga_state_to_json(s.ga);
+        content["ga"] = ga_state_to_json(ga_of(s));
     return checkpoint_text(content);
 }
 }  // namespace
@@ -119,7 +121,7 @@ TEST_CASE("format 2 keeps every genome's exact bits, -0.0, denormals and 1e308 i
     const std::string bytes = small_run(tmp);
     const fs::path path = tmp.path / "run" / "checkpoint.json";
     RunState state = load_checkpoint(path);
-    REQUIRE(state.ga.population.size() == 3);
+    REQUIRE(ga_of(state).population.size() == 3);
     const std::vector<double> special{-0.0,
                                       0.0,
                                       std::numeric_limits<double>::denorm_min(),
@@ -133,19 +135,19 @@ TEST_CASE("format 2 keeps every genome's exact bits, -0.0, denormals and 1e308 i
                                       1.0 / 3.0,
                                       std::nextafter(1.0, 2.0)};
     std::size_t member = 0;  // one that is not the best (the best must equal its copy in the population)
-    while (state.ga.population[member].id == state.ga.best->id) ++member;
-    std::vector<double>& params = state.ga.population[member].params;
+    while (ga_of(state).population[member].id == ga_of(state).best->id) ++member;
+    std::vector<double>& params = ga_of(state).population[member].params;
     REQUIRE(params.size() == 30);
     std::copy(special.begin(), special.end(), params.begin());
     save_checkpoint(path, state);
     const std::string saved = read_text(path);
 
     const RunState loaded = load_checkpoint(path);
-    CHECK(same_bits(loaded.ga.population[member].params, params));
-    CHECK(std::signbit(loaded.ga.population[member].params[0]));
-    for (std::size_t i = 0; i < state.ga.population.size(); ++i)
-        CHECK(same_bits(loaded.ga.population[i].params, state.ga.population[i].params));
-    CHECK(same_bits(loaded.ga.best->params, state.ga.best->params));
+    CHECK(same_bits(ga_of(loaded).population[member].params, params));
+    CHECK(std::signbit(ga_of(loaded).population[member].params[0]));
+    for (std::size_t i = 0; i < ga_of(state).population.size(); ++i)
+        CHECK(same_bits(ga_of(loaded).population[i].params, ga_of(state).population[i].params));
+    CHECK(same_bits(ga_of(loaded).best->params, ga_of(state).best->params));
     CHECK(checkpoint_bytes(loaded) == saved);  // the same bytes again
 
     // The layout: a JSON header line, then count x dimension x 8 bytes, the genomes in order.
@@ -299,8 +301,8 @@ TEST_CASE("format 2's genome references and binary part must fit; contradictions
 
 TEST_CASE("an archive of 10,000 elites of the default network checkpoints in under 200 MB", "[app][checkpoint][limits]") {
     const RunState state = generation0_state(archive_config(20000), 10000);
-    REQUIRE(state.elites->archive.occupied() == 10000);
-    const std::size_t D = state.elites->best->params.size();
+    REQUIRE(elites_of(state).archive.occupied() == 10000);
+    const std::size_t D = elites_of(state).best->params.size();
     REQUIRE(D == 1845);  // 18.45 M parameters in the archive
     const std::string bytes = checkpoint_bytes(state);
     const std::size_t header = header_end(bytes) + 1;
@@ -311,9 +313,9 @@ TEST_CASE("an archive of 10,000 elites of the default network checkpoints in und
     TempDir tmp("ckpt2-size");
     write_file_atomically(tmp.path / "checkpoint.json", bytes);
     const RunState loaded = load_checkpoint(tmp.path / "checkpoint.json");
-    CHECK(loaded.elites->archive.occupied() == 10000);
-    CHECK(same_bits(loaded.elites->archive.elites().rbegin()->second.params,
-                    state.elites->archive.elites().rbegin()->second.params));
+    CHECK(elites_of(loaded).archive.occupied() == 10000);
+    CHECK(same_bits(elites_of(loaded).archive.elites().rbegin()->second.params,
+                    elites_of(state).archive.elites().rbegin()->second.params));
     CHECK(checkpoint_bytes(loaded) == bytes);
 }
 

@@ -6,6 +6,7 @@
 #include "run/checkpoint_checks.hpp"
 #include "run/fnv_hash.hpp"
 #include "tests/app/evolve_test_support.hpp"
+#include "tests/app/search_states.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -65,8 +66,8 @@ TEST_CASE("a checkpoint round-trips exactly", "[app][checkpoint]") {
     TempDir tmp("checkpoint-roundtrip");
     const std::string text = tiny_checkpoint(tmp);
     const RunState state = load_checkpoint(tmp.path / "run" / "checkpoint.json");
-    CHECK(state.ga.births == 24);
-    CHECK(state.ga.population.size() == 8);
+    CHECK(ga_of(state).births == 24);
+    CHECK(ga_of(state).population.size() == 8);
     CHECK(state.history.size() == 3);
     CHECK(state.seed == 7);
     save_checkpoint(tmp.path / "copy.json", state);
@@ -295,9 +296,9 @@ TEST_CASE("invalid births and the best are checked against lineage.csv", "[app][
     std::string lineage = lineage_header;
     for (const Individual& ind : births) lineage += format_lineage_row(ind);
     RunState state;
-    state.ga.births = 4;
-    state.ga.population = {births[2], births[0]};
-    state.ga.best = births[2];
+    ga_of(state).births = 4;
+    ga_of(state).population = {births[2], births[0]};
+    ga_of(state).best = births[2];
     for (std::uint64_t g = 0; g < 2; ++g) {
         HistoryRow row;
         row.generation = g;
@@ -316,18 +317,18 @@ TEST_CASE("invalid births and the best are checked against lineage.csv", "[app][
     CHECK_THROWS_WITH(check_checkpoint_against_lineage(bad, lineage, 2),
                       Catch::Contains("history[0].invalid is 0, lineage.csv records 1"));
     bad = state;
-    bad.ga.best = births[0];
+    ga_of(bad).best = births[0];
     CHECK_THROWS_WITH(check_checkpoint_against_lineage(bad, lineage, 2), Catch::Contains("not the first birth"));
     bad = state;
-    bad.ga.best.reset();
+    ga_of(bad).best.reset();
     CHECK_THROWS_WITH(check_checkpoint_against_lineage(bad, lineage, 2), Catch::Contains("ga.best is null"));
     CHECK_THROWS_WITH(check_checkpoint_against_lineage(state, lineage + "4,4,2,,2\n", 2),
                       Catch::Contains("records 5 births"));
     // A later birth as good as the best does not replace it (earliest on ties).
     RunState later = state;
-    later.ga.births = 5;
+    ga_of(later).births = 5;
     CHECK_NOTHROW(check_checkpoint_against_lineage(later, lineage + format_lineage_row(born(4, 2, 2.0)), 2));
-    later.ga.invalid_in_generation = 1;
+    ga_of(later).invalid_in_generation = 1;
     CHECK_THROWS_WITH(check_checkpoint_against_lineage(later, lineage + format_lineage_row(born(4, 2, 2.0)), 2),
                       Catch::Contains("invalid_in_generation"));
 }
@@ -348,11 +349,11 @@ TEST_CASE("lineage.csv with descriptor columns is checked against the checkpoint
     for (const Individual& ind : births) lineage += format_lineage_row(ind, 2);
     // a GA's state keeps no descriptors: its members are compared up to the fitness
     RunState state;
-    state.ga.births = 3;
-    state.ga.population = {births[2], births[0], births[1]};
-    for (Individual& member : state.ga.population) member.descriptors.clear();
-    state.ga.best = state.ga.population[0];
-    state.ga.invalid_in_generation = 1;
+    ga_of(state).births = 3;
+    ga_of(state).population = {births[2], births[0], births[1]};
+    for (Individual& member : ga_of(state).population) member.descriptors.clear();
+    ga_of(state).best = ga_of(state).population[0];
+    ga_of(state).invalid_in_generation = 1;
     REQUIRE_NOTHROW(check_checkpoint_against_lineage(state, lineage, 3, header));
     // the header must be the config's
     CHECK_THROWS_WITH(check_checkpoint_against_lineage(state, lineage, 3), Catch::Contains("does not start with its header"));
@@ -365,15 +366,15 @@ TEST_CASE("lineage.csv with descriptor columns is checked against the checkpoint
                       Catch::Contains("lineage.csv row 3 does not have 7 cells"));
     // the fitness is the fifth cell, not the last
     RunState worse = state;
-    worse.ga.population[0].fitness = 0.25;
-    worse.ga.best = worse.ga.population[0];
+    ga_of(worse).population[0].fitness = 0.25;
+    ga_of(worse).best = ga_of(worse).population[0];
     CHECK_THROWS_WITH(check_checkpoint_against_lineage(worse, lineage, 3, header),
                       Catch::Contains("differs from its lineage.csv row"));
     // a member that keeps its descriptors (a MAP-Elites elite) is compared with them
     RunState kept = state;
-    kept.ga.population[1].descriptors = {1.5, 2};
+    ga_of(kept).population[1].descriptors = {1.5, 2};
     CHECK_NOTHROW(check_checkpoint_against_lineage(kept, lineage, 3, header));
-    kept.ga.population[1].descriptors = {1.5, 2.5};
+    ga_of(kept).population[1].descriptors = {1.5, 2.5};
     CHECK_THROWS_WITH(check_checkpoint_against_lineage(kept, lineage, 3, header),
                       Catch::Contains("ga.population[1] (id 0) differs from its lineage.csv row"));
 }

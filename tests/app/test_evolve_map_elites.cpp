@@ -6,6 +6,7 @@
 #include "run/fnv_hash.hpp"
 #include "run/run_records.hpp"
 #include "tests/app/evolve_test_support.hpp"
+#include "tests/app/search_states.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -103,8 +104,9 @@ TEST_CASE("archive.csv agrees with lineage.csv and the checkpoint", "[app][map_e
     CHECK(archive[0] == "cell,height,footprint,fitness,id");
     CHECK(lineage[0] == "id,birth,parent1,parent2,fitness,height,footprint");
     const RunState state = load_checkpoint(tmp.path / "run" / "checkpoint.json");
-    REQUIRE(state.elites);
-    CHECK(state.elites->archive.occupied() == archive.size() - 1);
+    REQUIRE(state.search);
+    REQUIRE(elites_state(*state.search) != nullptr);
+    CHECK(elites_of(state).archive.occupied() == archive.size() - 1);
     double best = -1e300;
     long previous = -1;
     for (std::size_t i = 1; i < archive.size(); ++i) {
@@ -127,12 +129,12 @@ TEST_CASE("archive.csv agrees with lineage.csv and the checkpoint", "[app][map_e
             return std::clamp(static_cast<long>(x / max * bins), 0L, static_cast<long>(bins - 1));
         };
         CHECK(cell == bin(std::stod(row[1]), 3, 6) * 5 + bin(std::stod(row[2]), 10, 5));
-        const Individual& elite = state.elites->archive.elites().at(static_cast<std::uint64_t>(cell));
+        const Individual& elite = elites_of(state).archive.elites().at(static_cast<std::uint64_t>(cell));
         CHECK(elite.id == id);
         best = std::max(best, elite.fitness);
     }
-    REQUIRE(state.elites->best);
-    CHECK(state.elites->best->fitness == best);
+    REQUIRE(elites_of(state).best);
+    CHECK(elites_of(state).best->fitness == best);
 }
 
 TEST_CASE("a damaged or inconsistent MAP-Elites checkpoint is refused and left as it was", "[app][map_elites][checkpoint]") {

@@ -1,4 +1,4 @@
-#include "run/worker_threads.hpp"
+#include "evolution/worker_threads.hpp"
 
 #include <omp.h>
 
@@ -8,7 +8,7 @@ namespace morphogen {
 
 int resolve_threads(int threads) {
     const int cores = std::max(1, omp_get_num_procs());
-    return threads > 0 ? std::min(threads, cores) : omp_get_max_threads();
+    return threads > 0 ? std::min(threads, cores) : std::max(1, omp_get_max_threads());
 }
 
 }  // namespace morphogen
