@@ -6,6 +6,7 @@
 #include "evolution/pipeline.hpp"
 #include "evolution/schedule.hpp"
 #include "evolution/thread_evaluator.hpp"
+#include "evolution/worker_threads.hpp"
 
 #include <algorithm>
 #include <cstdint>
@@ -29,7 +30,7 @@ struct Bred {
 inline std::vector<Bred> breed_until(Breeder& breeder, Problem& problem, std::uint64_t population, std::uint64_t batch,
                                      int threads, std::uint64_t target,
                                      const std::function<void(const Bred&)>& each = {}) {
-    ThreadEvaluator evaluator(problem, resolve_thread_count(threads));
+    ThreadEvaluator evaluator(problem, resolve_threads(threads));
     BirthPipeline pipeline(BirthSchedule{ScheduleKind::batch, population, batch}, breeder, evaluator);
     std::vector<Bred> out;
     pipeline.run(
