@@ -5,7 +5,6 @@
 #include "growth/network.hpp"
 #include "io/mesh_io.hpp"
 
-#include <cmath>
 #include <cstring>
 #include <iterator>
 #include <limits>
@@ -81,20 +80,14 @@ Evaluation GrowthProblem::evaluate_mesh(std::span<const double> params, int work
         try {
             evaluation.descriptors = (*descriptors_)(state.mesh.view());
         } catch (const std::invalid_argument& e) {
+            // A GA only records descriptors: a birth it could not measure
+            // keeps none (empty cells in lineage.csv), so declaring
+            // descriptors never changes what a GA run computes.
             if (descriptors_decide_validity_) {
                 evaluation.valid = false;
                 evaluation.error = std::string("descriptors: ") + e.what();
             }
         }
-        // A GA only records them: a birth it could not measure stays as it is,
-        // with no descriptors (empty cells in lineage.csv), so declaring
-        // descriptors never changes what a GA run computes.
-        if (!descriptors_decide_validity_)
-            for (double d : evaluation.descriptors)
-                if (!std::isfinite(d)) {
-                    evaluation.descriptors.clear();
-                    break;
-                }
     }
     // Only a run that exports keeps files: a finished birth waits for its
     // turn to be inserted with them, so they cost memory per birth in flight.

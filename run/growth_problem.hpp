@@ -26,9 +26,11 @@ public:
     void prepare(int workers) override;
     // Score = fitness of the grown mesh; size = its vertex count; when the
     // config has descriptors, descriptors = its measures of that same mesh.
-    // In a MAP-Elites run a valid score with a measure that throws is
-    // invalid, with the reason; a GA run only records the measures, so there
-    // a measure that throws or is non-finite leaves descriptors empty.
+    // Valid only with a finite score and finite descriptors: Fitness and
+    // DescriptorSet check them where they are made (so nothing here does).
+    // In a MAP-Elites run a valid score with a measure that throws or is
+    // non-finite is invalid, with the reason; a GA run only records the
+    // measures, so there such a measure leaves descriptors empty.
     Evaluation evaluate(std::span<const double> params, int worker) const override;
     // Also keeps, when valid with a score >= keep_from, the grown mesh's
     // export files (.glb and .obj bytes), so exporting it grows nothing.

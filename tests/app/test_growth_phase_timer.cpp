@@ -39,7 +39,7 @@ Timed grow_timed(const GrowthParams& params) {
 }
 }  // namespace
 
-TEST_CASE("the phase timer splits growth into bench's columns, within the wall time", "[bench]") {
+TEST_CASE("the phase timer splits growth into bench's columns, within the wall time", "[app][phase-timer]") {
     GrowthParams params;
     params.steps = 40;
     for (const Collisions collisions : {Collisions::allow, Collisions::prevent}) {
@@ -55,9 +55,8 @@ TEST_CASE("the phase timer splits growth into bench's columns, within the wall t
         CHECK(p.flip > 0.0);
         // Only the guard of §5.7 collides.
         CHECK((p.collide > 0.0) == (collisions == Collisions::prevent));
-        // The gather timed apart is the timer's own work, counted in gather.
+        // The gather timed apart is the timer's own work, outside every phase.
         CHECK(t.own_seconds > 0.0);
-        CHECK(t.own_seconds <= p.gather + 1e-9);
         CHECK(p.total() + t.own_seconds <= t.wall);
     }
 }
