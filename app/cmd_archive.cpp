@@ -66,7 +66,7 @@ void heat_colour(double t, std::uint8_t* p) {
 // The map of elites of a grid archive: the first descriptor up the y axis,
 // the second (if any) along x; with a third, each (x, y) shows the fittest
 // elite over it. Plants are framed one by one (each fills its cell).
-void write_map(const Archive& archive, const std::vector<Elite>& elites, const GrowthProblem& problem, int size,
+void write_map(const Archive& archive, const std::vector<Elite>& elites, const GenomeGrower& grower, int size,
                const std::string& path) {
     const auto& ranges = archive.ranges();
     const int rows = ranges[0].bins;
@@ -90,7 +90,7 @@ void write_map(const Archive& archive, const std::vector<Elite>& elites, const G
     options.size = size;
     for (const auto& [at, elite] : shown) {
         const int x0 = left + at.second * size, y0 = top + (rows - 1 - at.first) * size;
-        const GrowthState grown = problem.grow(elite->params);
+        const GrowthState grown = grower.grow(elite->params);
         const Image picture = render_mesh(grown.mesh.view(), options);
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x) std::copy_n(picture.pixel(x, y), 3, image.pixel(x0 + x, y0 + y));
@@ -173,7 +173,7 @@ int run_archive(const ArchiveOptions& o) {
     std::cout << "wrote " << elites.size() << " of " << archive.occupied() << " elites to " << out.string()
               << " (species.csv)\n";
     if (!o.png.empty()) {
-        write_map(archive, elites, problem, o.size, o.png);
+        write_map(archive, elites, problem.grower(), o.size, o.png);
         std::cout << "wrote the map of elites to " << o.png << "\n";
     }
     return 0;

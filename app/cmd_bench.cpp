@@ -1,10 +1,12 @@
 // `morphogen bench`: the project's own speed measurement. Grows a fixed set of
-// random genomes on one thread (with the time split between phases) and on
-// all threads, `--repeat` times in alternation; prints the median of each
-// figure (shared machines are noisy: one pass proves little).
+// random genomes on one thread (with the time split between phases by
+// GrowthPhaseTimer) and on all threads, `--repeat` times in alternation;
+// prints the median of each figure (shared machines are noisy: one pass
+// proves little).
 #include "app/commands.hpp"
 #include "app/fma_peak.hpp"
-#include "growth/growth.hpp"
+#include "app/growth_phase_timer.hpp"
+#include "growth/genome_grower.hpp"
 #include "run/experiment_config.hpp"
 #include "run/genome_source.hpp"
 
@@ -55,13 +57,16 @@ struct BenchPass {
     double wall_1t = 0, wall_all = 0;
 };
 
-BenchPass run_pass(const std::vector<Network>& networks, const GrowthParams& growth, const Seed& seed, int threads) {
+BenchPass run_pass(const std::vector<Network>& networks, const GenomeGrower& grower, int threads) {
     BenchPass pass;
     GrowthWorkspace workspace;
+    GrowthPhaseTimer timer(grower.params().height_scale);
     auto start = std::chrono::steady_clock::now();
     for (const Network& network : networks)
-        pass.vertices_out += Grower(network, growth).grow(seed, workspace, &pass.phases).mesh.num_vertices();
-    pass.wall_1t = seconds_since(start);
+        pass.vertices_out += grower.grow(network, workspace, {}, &timer).mesh.num_vertices();
+    // The timer's own measuring is no part of growth.
+    pass.wall_1t = seconds_since(start) - timer.own_seconds();
+    pass.phases = timer.times();
 
     // All threads, one genome per thread at a time (as evolution runs).
     start = std::chrono::steady_clock::now();
@@ -70,7 +75,7 @@ BenchPass run_pass(const std::vector<Network>& networks, const GrowthParams& gro
     {
         GrowthWorkspace local;
 #pragma omp for schedule(dynamic)
-        for (int i = 0; i < count; ++i) Grower(networks[i], growth).grow(seed, local);
+        for (int i = 0; i < count; ++i) grower.grow(networks[i], local);
     }
     pass.wall_all = seconds_since(start);
     return pass;
@@ -78,8 +83,8 @@ BenchPass run_pass(const std::vector<Network>& networks, const GrowthParams& gro
 
 int run_bench(const BenchOptions& options) {
     const ExperimentConfig config = load_experiment_config(options.config);
-    const std::vector<int> layers = config.network.layers();
-    const Seed seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
+    const GenomeGrower grower(config.network, config.growth);
+    const std::vector<int>& layers = grower.layers();
     std::vector<Network> networks;
     for (int i = 0; i < options.genomes; ++i)
         networks.emplace_back(random_genome(layers, config.evolution.init_range, options.seed + i));
@@ -89,7 +94,7 @@ int run_bench(const BenchOptions& options) {
     std::vector<double> peaks;  // measured between passes: the machine's speed drifts
     for (int r = 0; r < options.repeat; ++r) {
         peaks.push_back(measure_fma_peak(0.05));
-        passes.push_back(run_pass(networks, config.growth, seed, threads));
+        passes.push_back(run_pass(networks, grower, threads));
     }
     const double peak = median(peaks);
     // Every pass grows the same meshes, so vertex-steps are the same in each.

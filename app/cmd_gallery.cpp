@@ -3,7 +3,7 @@
 #include "app/mesh_stats.hpp"
 #include "app/resource_options.hpp"
 #include "base/errors.hpp"
-#include "growth/growth.hpp"
+#include "growth/genome_grower.hpp"
 #include "io/mesh_io.hpp"
 #include "report/render.hpp"
 #include "run/experiment_config.hpp"
@@ -51,10 +51,9 @@ std::string entry_name(int index, const std::string& extension) {
 
 int run_gallery(const GalleryOptions& options) {
     const ExperimentConfig config = load_experiment_config(options.config);
-    const std::vector<int> layers = config.network.layers();
-    const Seed seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
+    const GenomeGrower grower(config.network, config.growth);
     const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-    check_resource_limits(config, seed,
+    check_resource_limits(config, grower.seed(),
                           Workload{.threads = threads, .writers = options.format != "none" ? double(threads) : 0.0,
                                    .kept_meshes = double(options.count)},
                           options.resources.limits(), config_source(options.config));
@@ -74,8 +73,8 @@ int run_gallery(const GalleryOptions& options) {
             entry.seed = options.seed + static_cast<std::uint64_t>(i);
             try {
                 const auto start = std::chrono::steady_clock::now();
-                const Network network(random_genome(layers, config.evolution.init_range, entry.seed));
-                GrowthState state = Grower(network, config.growth).grow(seed, workspace);
+                const Genome genome = random_genome(grower.layers(), config.evolution.init_range, entry.seed);
+                GrowthState state = grower.grow(genome.params, workspace);
                 entry.time_ms =
                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
                 entry.fitness = config.fitness->evaluate(state.mesh.view());
@@ -102,7 +101,7 @@ int run_gallery(const GalleryOptions& options) {
             continue;
         }
         const MeshStats stats = mesh_stats(e.mesh.view());
-        const bool did_grow = static_cast<int>(e.mesh.positions.size()) > seed.mesh.num_vertices();
+        const bool did_grow = static_cast<int>(e.mesh.positions.size()) > grower.seed().mesh.num_vertices();
         grew += did_grow;
         char row[256];
         std::snprintf(row, sizeof row, "%d,%llu,%zu,%zu,%.17g,%.17g,%d,%.3f,", i,

@@ -4,7 +4,7 @@
 #include "app/resource_options.hpp"
 #include "base/errors.hpp"
 #include "growth/genome_io.hpp"
-#include "growth/growth.hpp"
+#include "growth/genome_grower.hpp"
 #include "io/mesh_io.hpp"
 #include "report/growth_animation.hpp"
 #include "run/experiment_config.hpp"
@@ -48,18 +48,17 @@ int run_grow(const GrowOptions& options) {
         const std::string problem = animation_frames_problem(frames, config.growth.steps);
         if (!problem.empty()) throw ConfigError("--frames " + std::to_string(frames) + ": " + problem);
     }
-    const std::vector<int> layers = config.network.layers();
-    const Genome genome = options.random_seed ? random_genome(layers, config.evolution.init_range, *options.random_seed)
-                                              : load_genome_for(layers, options.genome);
+    const GenomeGrower grower(config.network, config.growth);
+    const Genome genome = options.random_seed
+                              ? random_genome(grower.layers(), config.evolution.init_range, *options.random_seed)
+                              : load_genome_for(grower.layers(), options.genome);
     const Network network(genome);
-    const Seed seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
 
     const auto start = std::chrono::steady_clock::now();
     GrowthWorkspace workspace;
-    const Grower grower(network, config.growth);
     GrowthFrames recorded;
-    const GrowthState state = animating ? grow_with_frames(grower, seed, config.growth.steps, frames, workspace, recorded)
-                                        : grower.grow(seed, workspace);
+    const GrowthState state = animating ? grow_with_frames(grower, network, frames, workspace, recorded)
+                                        : grower.grow(network, workspace);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     write_mesh(state.mesh.view(), options.output, options.mesh_options);

@@ -5,7 +5,7 @@
 #include "base/config_reader.hpp"
 #include "base/errors.hpp"
 #include "fitness/fitness.hpp"
-#include "growth/growth.hpp"
+#include "growth/genome_grower.hpp"
 #include "io/mesh_io.hpp"
 #include "run/experiment_config.hpp"
 #include "run/genome_source.hpp"
@@ -39,10 +39,8 @@ ExperimentConfig score_config(const ScoreOptions& options) {
 }
 
 MeshArrays grow_genome(const ExperimentConfig& config, const std::string& path) {
-    const Network network(load_genome_for(config.network.layers(), path));
-    const Seed seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
-    GrowthWorkspace workspace;
-    const GrowthState state = Grower(network, config.growth).grow(seed, workspace);
+    const GenomeGrower grower(config.network, config.growth);
+    const GrowthState state = grower.grow(load_genome_for(grower.layers(), path).params);
     return {state.mesh.positions(), state.mesh.faces()};
 }
 

@@ -30,7 +30,7 @@ int run_validate(const ValidateOptions& o) {
             // file that cannot be read is 3, one that is not a usable mesh 4.
             Seed seed;
             try {
-                seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
+                seed = make_seed(config.growth);
             } catch (const IoError& e) {
                 throw IoError(path + ": " + e.what());
             } catch (const MeshError& e) {

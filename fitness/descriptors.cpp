@@ -126,7 +126,13 @@ std::vector<double> DescriptorSet::operator()(MeshView mesh) const {
     require_vertices(mesh);
     std::vector<double> values;
     values.reserve(measures_.size());
-    for (const DescriptorMeasure* m : measures_) values.push_back(m->measure(mesh, canopy_));
+    for (const DescriptorMeasure* m : measures_) {
+        const double value = m->measure(mesh, canopy_);
+        if (!std::isfinite(value))
+            throw std::invalid_argument("non-finite descriptor " + std::to_string(values.size()) + " (" + m->name +
+                                        " = " + std::to_string(value) + ")");
+        values.push_back(value);
+    }
     return values;
 }
 

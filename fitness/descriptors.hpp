@@ -3,8 +3,8 @@
 // (docs/fitness.md "Descriptor measures" defines each exactly). Each is a
 // pure function of the mesh and the canopy parameters of the run's fitness
 // (canopy_params_of), thread-safe. A measure may be non-finite for a
-// degenerate mesh (e.g. slenderness of a zero footprint): the search then
-// treats the child as invalid.
+// degenerate mesh (e.g. slenderness of a zero footprint); a DescriptorSet
+// refuses such a value, so descriptors that reach a search are finite.
 #include "fitness/canopy.hpp"
 #include "mesh/mesh.hpp"
 
@@ -34,8 +34,10 @@ class DescriptorSet {
 public:
     // Throws std::invalid_argument for an unknown name (as find_descriptor_measure).
     DescriptorSet(const std::vector<std::string>& names, CanopyParams canopy);
-    // One value per name, in order. Throws std::invalid_argument for a
-    // malformed mesh or one without vertices.
+    // One value per name, in order, each finite. Throws std::invalid_argument
+    // for a malformed mesh, one without vertices, or a measure that is not
+    // finite on it ("non-finite descriptor 1 (spread = inf)"): the only
+    // finiteness check descriptors get between a genome and a search.
     std::vector<double> operator()(MeshView mesh) const;
     const std::vector<std::string>& names() const { return names_; }
 

@@ -3,7 +3,6 @@
 #include "mesh/fan_certificate.hpp"
 
 #include <algorithm>
-#include <chrono>
 
 namespace morphogen {
 
@@ -223,14 +222,6 @@ void CollisionGuard::face_changed(const TriMesh& mesh, int f) {
 }
 
 bool CollisionGuard::allows(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g) {
-    if (!timed) return allows_untimed(mesh, f, g, new_f, new_g);
-    const auto start = std::chrono::steady_clock::now();
-    const bool allowed = allows_untimed(mesh, f, g, new_f, new_g);
-    flip_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return allowed;
-}
-
-bool CollisionGuard::allows_untimed(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g) {
     const std::vector<Vec3>& x = mesh.positions();
     const IndexedTriangle tf = IndexedTriangle::of(x, new_f), tg = IndexedTriangle::of(x, new_g);
     for (const IndexedTriangle* t : {&tf, &tg})

@@ -47,10 +47,6 @@ public:
 
     // Vertices whose step was shortened, and refused, since construction.
     std::uint64_t shortened = 0, refused = 0;
-    // When `timed`, allows() adds its seconds here (the flip phase's share
-    // of the collision work, for PhaseTimes::collide).
-    bool timed = false;
-    double flip_seconds = 0.0;
 
 private:
     // Whether the guard's listing describes this mesh (its faces, and
@@ -67,7 +63,6 @@ private:
     // The faces around v, in ring order, into fan_faces_.
     void collect_fan(const TriMesh& mesh, int v, int some_face);
     const IndexedTriangle& triangle(const TriMesh& mesh, int f);
-    bool allows_untimed(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g);
 
     FaceListing listing_;
     std::vector<Face> faces_;          // the faces the listing describes

@@ -5,51 +5,11 @@
 #include "growth/gather_kernel.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <numbers>
-
-#if defined(__x86_64__) || defined(__i386__)
-#include <x86intrin.h>
-#endif
+#include <optional>
 
 namespace morphogen {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// Adds the seconds since `start` to `slot` (when timing is on) and restarts.
-class PhaseClock {
-public:
-    explicit PhaseClock(PhaseTimes* times) : times_(times), start_(times ? Clock::now() : Clock::time_point{}) {}
-    // Returns the seconds added.
-    double lap(double PhaseTimes::*slot) {
-        if (times_ == nullptr) return 0.0;
-        const auto now = Clock::now();
-        const double seconds = std::chrono::duration<double>(now - start_).count();
-        times_->*slot += seconds;
-        start_ = now;
-        return seconds;
-    }
-
-private:
-    PhaseTimes* times_;
-    Clock::time_point start_;
-};
-
-}  // namespace
-
-PhaseTimes& PhaseTimes::operator+=(const PhaseTimes& o) {
-    gather += o.gather;
-    think += o.think;
-    move += o.move;
-    split += o.split;
-    flip += o.flip;
-    collide += o.collide;
-    vertex_steps += o.vertex_steps;
-    return *this;
-}
 
 Grower::Grower(const Network& network, const GrowthParams& params) : network_(network), params_(params) {
     const int N = network.outputs();
@@ -93,98 +53,31 @@ void Grower::build_neighbours(const TriMesh& mesh, GrowthWorkspace& workspace) c
     }
 }
 
-namespace {
-
-// A tick counter to split the fused gather+network time: the gather runs
-// once per block of 8 vertices, too often for clock_gettime. Fenced on both
-// sides: a bare rdtsc may execute before the code ahead of it has finished,
-// or after code behind it has started, so an interval would take in part of
-// its neighbours' work (here, the kernel's).
-std::uint64_t ticks() {
-#if defined(__x86_64__) || defined(__i386__)
-    _mm_lfence();
-    const std::uint64_t t = __rdtsc();
-    _mm_lfence();
-    return t;
-#else
-    return static_cast<std::uint64_t>(Clock::now().time_since_epoch().count());
-#endif
-}
-
-// What a pair of back-to-back ticks() reads on top of the code between them
-// (the smallest of 64 tries; 49 ticks = 20 ns on the development VM): a
-// timed interval is that much too long.
-std::uint64_t tick_overhead() {
-    static const std::uint64_t overhead = [] {
-        std::uint64_t least = ~std::uint64_t{0};
-        for (int i = 0; i < 64; ++i) {
-            const std::uint64_t a = ticks();
-            least = std::min(least, ticks() - a);
-        }
-        return least;
-    }();
-    return overhead;
-}
-
-// What the network's input source needs: the gather of docs/algorithm.md §4.2 for a block of
-// vertices, and (when timing) an estimate of the ticks it took. Only one
-// block in `sample_every` is timed: a fenced read costs about 27 ns here and
-// drains the pipeline, and two per block of 8 vertices would slow the timed
-// pass itself. The timed blocks' ticks, less the reads' own overhead, are
-// scaled up to all blocks. The sampling phase runs on across calls and
-// genomes (per thread), so the timed blocks rotate.
-struct BlockGather {
-    static constexpr std::uint64_t sample_every = 8;
-    kernel::GatherInput input;
-    bool timed = false;
-    mutable std::uint64_t gather_ticks = 0, blocks = 0, timed_blocks = 0;
-
-    static void fill(const void* context, std::ptrdiff_t first, int count, double* rows) {
-        thread_local std::uint64_t phase = 0;
-        const auto& self = *static_cast<const BlockGather*>(context);
-        if (self.timed) ++self.blocks;
-        if (!self.timed || phase++ % sample_every != 0) {
-            kernel::gather_inputs(self.input, static_cast<int>(first), count, rows);
-            return;
-        }
-        const std::uint64_t start = ticks();
-        kernel::gather_inputs(self.input, static_cast<int>(first), count, rows);
-        const std::uint64_t elapsed = ticks() - start, overhead = tick_overhead();
-        self.gather_ticks += elapsed > overhead ? elapsed - overhead : 0;
-        ++self.timed_blocks;
-    }
-
-    // The estimated share of `total` ticks spent gathering.
-    double share_of(std::uint64_t total) const {
-        if (total == 0 || timed_blocks == 0) return 0.0;
-        const double estimate = static_cast<double>(gather_ticks) * static_cast<double>(blocks) /
-                                static_cast<double>(timed_blocks);
-        return std::min(1.0, estimate / static_cast<double>(total));
-    }
-};
-
-}  // namespace
-
-double Grower::think(GrowthState& state, GrowthWorkspace& workspace, bool timed) const {
-    const TriMesh& mesh = state.mesh;
-    BlockGather gather;
-    gather.timed = timed;
-    kernel::GatherInput& in = gather.input;
-    in.outputs = network_.outputs();
+kernel::GatherInput gather_input(const GrowthState& state, const GrowthWorkspace& workspace, double height_scale) {
+    kernel::GatherInput in;
+    in.outputs = state.outputs_per_vertex;
     in.previous = state.outputs.data();
     in.neighbour_offsets = workspace.neighbour_offsets.data();
     in.neighbours = workspace.neighbours.data();
     in.directions = state.directions.data();
-    in.positions = mesh.positions().data();
-    in.height_scale = params_.height_scale;
+    in.positions = state.mesh.positions().data();
+    in.height_scale = height_scale;
     in.active = state.active.empty() ? nullptr : state.active.data();
-    workspace.next_outputs.resize(static_cast<std::size_t>(network_.outputs()) * mesh.num_vertices());
-    if (timed) tick_overhead();  // calibrated once, outside the timed interval
-    const std::uint64_t start = timed ? ticks() : 0;
-    network_.evaluate(kernel::InputSource{&BlockGather::fill, &gather}, workspace.next_outputs, workspace.network);
-    const std::uint64_t total = timed ? ticks() - start : 0;
+    return in;
+}
+
+namespace {
+// The network's input source: the gather of docs/algorithm.md §4.2 for a block of vertices.
+void gather_block(const void* input, std::ptrdiff_t first, int count, double* rows) {
+    kernel::gather_inputs(*static_cast<const kernel::GatherInput*>(input), static_cast<int>(first), count, rows);
+}
+}  // namespace
+
+void Grower::think(GrowthState& state, GrowthWorkspace& workspace) const {
+    const kernel::GatherInput input = gather_input(state, workspace, params_.height_scale);
+    workspace.next_outputs.resize(static_cast<std::size_t>(network_.outputs()) * state.mesh.num_vertices());
+    network_.evaluate(kernel::InputSource{&gather_block, &input}, workspace.next_outputs, workspace.network);
     state.outputs.swap(workspace.next_outputs);
-    return gather.share_of(total);
 }
 
 void Grower::branch(GrowthState& state, GrowthWorkspace& workspace) const {
@@ -264,66 +157,73 @@ void Grower::split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuar
     }
 }
 
-void Grower::flip(GrowthState& state, FlipGuard* guard) const {
-    if (guard == nullptr) {
-        flip_pass(state.mesh, flip_criteria_);
-        return;
+namespace {
+
+// Reports each flip the collision guard tests to an observer (§5.7's share
+// of the flip phase).
+class ObservedFlipGuard final : public FlipGuard {
+public:
+    ObservedFlipGuard(FlipGuard& guard, GrowthObserver& observer, const GrowthState& state,
+                      const GrowthWorkspace& workspace)
+        : guard_(guard), observer_(observer), state_(state), workspace_(workspace) {}
+    bool allows(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g) override {
+        observer_.begin(GrowthPhase::flip_guard, state_, workspace_);
+        const bool allowed = guard_.allows(mesh, f, g, new_f, new_g);
+        observer_.end(GrowthPhase::flip_guard, state_, workspace_);
+        return allowed;
     }
+
+private:
+    FlipGuard& guard_;
+    GrowthObserver& observer_;
+    const GrowthState& state_;
+    const GrowthWorkspace& workspace_;
+};
+
+// Runs one phase of a step between the observer's hooks (when there is one).
+template <class Phase>
+void observed(GrowthPhase phase, GrowthObserver* observer, const GrowthState& state, const GrowthWorkspace& workspace,
+              Phase&& run) {
+    if (observer != nullptr) observer->begin(phase, state, workspace);
+    run();
+    if (observer != nullptr) observer->end(phase, state, workspace);
+}
+
+}  // namespace
+
+void Grower::flip(GrowthState& state, GrowthWorkspace& workspace, FlipGuard* guard, GrowthObserver* phases) const {
     FlipCriteria criteria = flip_criteria_;
+    std::optional<ObservedFlipGuard> observed_guard;
+    if (guard != nullptr && phases != nullptr) guard = &observed_guard.emplace(*guard, *phases, state, workspace);
     criteria.guard = guard;
     flip_pass(state.mesh, criteria);
 }
 
-void Grower::step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times) const {
-    const int t = state.steps_done;
-    PhaseClock clock(times);
-    if (times != nullptr) times->vertex_steps += static_cast<std::uint64_t>(state.mesh.num_vertices());
-    build_neighbours(state.mesh, workspace);
-    clock.lap(&PhaseTimes::gather);
-    // Gather and network run together, a block of vertices at a time (the
-    // inputs never leave the L1 cache); the gather's share is counted inside.
-    const double gather_share = think(state, workspace, times != nullptr);
-    const double fused = clock.lap(&PhaseTimes::think);
-    if (times != nullptr) {
-        times->think -= gather_share * fused;
-        times->gather += gather_share * fused;
-    }
-    if (params_.mode == GrowthMode::branching) {
-        branch(state, workspace);
-        clock.lap(&PhaseTimes::move);  // counted with the move it steers (bench's "move")
-    }
+void Grower::step(GrowthState& state, GrowthWorkspace& workspace, GrowthObserver* phases) const {
+    const auto phase = [&](GrowthPhase which, auto&& run) { observed(which, phases, state, workspace, run); };
     // growth.collisions "prevent" (docs/algorithm.md §5.7): the move is
     // settled, splits are listed and flips guarded, so no two faces intersect.
     CollisionGuard* guard = params_.collisions == Collisions::prevent ? &workspace.collision : nullptr;
-    if (guard != nullptr) {
-        workspace.before_move.assign(state.mesh.positions().begin(), state.mesh.positions().end());
-        clock.lap(&PhaseTimes::collide);
-    }
-    move(state);
-    clock.lap(&PhaseTimes::move);
-    if (guard != nullptr) {
-        guard->settle_move(state.mesh, workspace.before_move);
-        clock.lap(&PhaseTimes::collide);
-    }
-    split(state, workspace, guard);
-    clock.lap(&PhaseTimes::split);
-    const double guard_before = guard != nullptr ? guard->flip_seconds : 0.0;
-    if (guard != nullptr) guard->timed = times != nullptr;
-    if ((t + 1) % params_.flip_every == 0) flip(state, guard);
-    clock.lap(&PhaseTimes::flip);
-    if (guard != nullptr && times != nullptr) {
-        times->flip -= guard->flip_seconds - guard_before;
-        times->collide += guard->flip_seconds - guard_before;
-    }
-    state.steps_done = t + 1;
+    phase(GrowthPhase::neighbours, [&] { build_neighbours(state.mesh, workspace); });
+    phase(GrowthPhase::think, [&] { think(state, workspace); });
+    if (params_.mode == GrowthMode::branching) phase(GrowthPhase::branch, [&] { branch(state, workspace); });
+    phase(GrowthPhase::move, [&] {
+        if (guard != nullptr) workspace.before_move.assign(state.mesh.positions().begin(), state.mesh.positions().end());
+        move(state);
+    });
+    if (guard != nullptr) phase(GrowthPhase::settle, [&] { guard->settle_move(state.mesh, workspace.before_move); });
+    phase(GrowthPhase::split, [&] { split(state, workspace, guard); });
+    if ((state.steps_done + 1) % params_.flip_every == 0)
+        phase(GrowthPhase::flip, [&] { flip(state, workspace, guard, phases); });
+    ++state.steps_done;
 }
 
-GrowthState Grower::grow(const Seed& seed, GrowthWorkspace& workspace, PhaseTimes* times,
-                         const StepObserver& observer) const {
+GrowthState Grower::grow(const Seed& seed, GrowthWorkspace& workspace, const StepObserver& after_step,
+                         GrowthObserver* phases) const {
     GrowthState state = start(seed);
     for (int t = 0; t < params_.steps; ++t) {
-        step(state, workspace, times);
-        if (observer) observer(state, t);
+        step(state, workspace, phases);
+        if (after_step) after_step(state, t);
     }
     return state;
 }

@@ -4,6 +4,8 @@
 // network, parameters and seed give the same mesh bit for bit.
 #include "growth/collision.hpp"
 #include "growth/flip_pass.hpp"
+#include "growth/gather_kernel.hpp"
+#include "growth/growth_observer.hpp"
 #include "growth/growth_params.hpp"
 #include "growth/network.hpp"
 #include "growth/seeds.hpp"
@@ -32,15 +34,6 @@ struct GrowthState {
     }
 };
 
-// Seconds spent in each phase (accumulated over calls).
-struct PhaseTimes {
-    double gather = 0, think = 0, move = 0, split = 0, flip = 0;
-    double collide = 0;  // growth.collisions "prevent" (§5.7): settling moves, guarding flips
-    std::uint64_t vertex_steps = 0;  // sum over steps of the vertices that thought
-    double total() const { return gather + think + move + split + flip + collide; }
-    PhaseTimes& operator+=(const PhaseTimes& o);
-};
-
 // Reusable per-thread buffers, so growing many genomes does not reallocate.
 struct GrowthWorkspace {
     // Plain vectors: they keep their capacity as the mesh grows, so steps do
@@ -58,6 +51,11 @@ struct GrowthWorkspace {
 // Called after every step with the step index t; for tests and animation.
 using StepObserver = std::function<void(const GrowthState&, int step)>;
 
+// What the gather of docs/algorithm.md §4.2 reads for `state`: its outputs,
+// directions and positions, and the neighbour lists in `workspace` (as the
+// neighbours phase left them: valid until the mesh changes).
+kernel::GatherInput gather_input(const GrowthState& state, const GrowthWorkspace& workspace, double height_scale);
+
 class Grower {
 public:
     // Throws ConfigError if the network does not fit (inputs != 3 * outputs, N < 3,
@@ -66,25 +64,26 @@ public:
 
     // The state before step 0: the seed with every output 0.5.
     GrowthState start(const Seed& seed) const;
-    // One timestep t (docs/algorithm.md §5) applied to `state`.
-    void step(GrowthState& state, GrowthWorkspace& workspace, PhaseTimes* times = nullptr) const;
-    // start() then params.steps steps.
-    GrowthState grow(const Seed& seed, GrowthWorkspace& workspace, PhaseTimes* times = nullptr,
-                     const StepObserver& observer = {}) const;
+    // One timestep t (docs/algorithm.md §5) applied to `state`, its phases
+    // reported to `phases` when there is one.
+    void step(GrowthState& state, GrowthWorkspace& workspace, GrowthObserver* phases = nullptr) const;
+    // start() then params.steps steps, `after_step` called after each.
+    GrowthState grow(const Seed& seed, GrowthWorkspace& workspace, const StepObserver& after_step = {},
+                     GrowthObserver* phases = nullptr) const;
 
 private:
     // The neighbour lists (CSR) of the mesh as it stands.
     void build_neighbours(const TriMesh& mesh, GrowthWorkspace& workspace) const;
-    // Gather (docs/algorithm.md §4.2) and network (§5.1): new outputs for every vertex. When
-    // timed, returns the gather's share of the time, estimated from a
-    // sample of its blocks (else 0).
-    double think(GrowthState& state, GrowthWorkspace& workspace, bool timed) const;
+    // Gather (docs/algorithm.md §4.2) and network (§5.1), fused a block of
+    // vertices at a time: new outputs for every vertex.
+    void think(GrowthState& state, GrowthWorkspace& workspace) const;
     // Branching mode (§5.8): stop and start growth, turn the directions.
     void branch(GrowthState& state, GrowthWorkspace& workspace) const;
     void move(GrowthState& state) const;
     // With a guard, every face a split writes is reported to it (§5.7).
     void split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuard* guard) const;
-    void flip(GrowthState& state, FlipGuard* guard) const;
+    // With a guard, each flip it tests is reported to `phases` as flip_guard.
+    void flip(GrowthState& state, GrowthWorkspace& workspace, FlipGuard* guard, GrowthObserver* phases) const;
 
     const Network& network_;
     GrowthParams params_;

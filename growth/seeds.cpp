@@ -105,4 +105,6 @@ Seed make_seed(const std::string& seed_mesh, double radius) {
     return seed;
 }
 
+Seed make_seed(const GrowthParams& growth) { return make_seed(growth.seed_mesh, growth.seed_radius); }
+
 }  // namespace morphogen

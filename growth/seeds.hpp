@@ -3,6 +3,7 @@
 // moved so their lowest point is at z = 0; their vertex and face order is
 // fixed (docs/algorithm.md §3.2 lists it, tests pin it) because it decides the split
 // and flip order. A file seed is used as it is.
+#include "growth/growth_params.hpp"
 #include "mesh/mesh.hpp"
 
 #include <string>
@@ -28,5 +29,7 @@ std::vector<Vec3> area_weighted_normals(const TriMesh& mesh, const std::string& 
 // a closed, outward-oriented genus-0 triangle manifold (MeshError/IoError
 // naming the file and the defect otherwise).
 Seed make_seed(const std::string& seed_mesh, double radius);
+// The seed growth.seed_mesh names, at growth.seed_radius.
+Seed make_seed(const GrowthParams& growth);
 
 }  // namespace morphogen

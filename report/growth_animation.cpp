@@ -70,21 +70,22 @@ std::vector<int> animation_frame_steps(int steps, int frames) {
     return out;
 }
 
-GrowthState grow_with_frames(const Grower& grower, const Seed& seed, int steps, int count,
-                             GrowthWorkspace& workspace, GrowthFrames& frames, PhaseTimes* times) {
+GrowthState grow_with_frames(const GenomeGrower& grower, const Network& network, int count,
+                             GrowthWorkspace& workspace, GrowthFrames& frames) {
+    const int steps = grower.params().steps;
     check_frames(count, steps);
     frames.steps = animation_frame_steps(steps, count);
     frames.meshes.clear();
     frames.meshes.reserve(frames.steps.size());
-    if (frames.steps.front() == 0) frames.meshes.push_back(snapshot(seed.mesh));  // start() keeps the seed's mesh
+    if (frames.steps.front() == 0) frames.meshes.push_back(snapshot(grower.seed().mesh));  // start() keeps the seed's mesh
     std::size_t next = frames.meshes.size();
-    const StepObserver observer = [&](const GrowthState& state, int t) {
+    const StepObserver take_frames = [&](const GrowthState& state, int t) {
         if (next < frames.steps.size() && frames.steps[next] == t + 1) {
             frames.meshes.push_back(snapshot(state.mesh));
             ++next;
         }
     };
-    GrowthState state = grower.grow(seed, workspace, times, observer);
+    GrowthState state = grower.grow(network, workspace, take_frames);
     if (frames.meshes.size() != frames.steps.size())  // grow() always does its params' steps
         throw std::logic_error("grow_with_frames: " + std::to_string(steps) + " steps asked, " +
                                std::to_string(state.steps_done) + " done");
@@ -94,11 +95,10 @@ GrowthState grow_with_frames(const Grower& grower, const Seed& seed, int steps, 
 GrowthFrames record_growth_frames(const ExperimentConfig& config, const Genome& genome, int frames) {
     check_frames(frames, config.growth.steps);
     const Network network(genome);
-    const Seed seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
-    const Grower grower(network, config.growth);
+    const GenomeGrower grower(config.network, config.growth);
     GrowthWorkspace workspace;
     GrowthFrames out;
-    grow_with_frames(grower, seed, config.growth.steps, frames, workspace, out);
+    grow_with_frames(grower, network, frames, workspace, out);
     return out;
 }
 

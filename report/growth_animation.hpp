@@ -5,9 +5,8 @@
 // each frame is a mesh and node of its own under one root node, and one
 // animation shows them in turn with STEP-interpolated scale keys, (1,1,1) for
 // the frame shown and (0,0,0) for the others (docs/file-formats.md).
-#include "growth/growth.hpp"
+#include "growth/genome_grower.hpp"
 #include "growth/network.hpp"
-#include "growth/seeds.hpp"
 #include "mesh/mesh.hpp"
 #include "run/experiment_config.hpp"
 
@@ -42,12 +41,12 @@ std::string animation_frames_problem(int frames, int steps);
 // `steps`. Requires animation_frames_problem(frames, steps) to be "".
 std::vector<int> animation_frame_steps(int steps, int frames);
 
-// Grows `seed` exactly as grower.grow(seed, workspace, times) does (the same
+// Grows `network` exactly as grower.grow(network, workspace) does (the same
 // final state, returned) while copying into `frames` the meshes after
-// animation_frame_steps(steps, count) steps. `steps` must be the GrowthParams
-// steps the grower was made with. Throws ConfigError for a bad `count`.
-GrowthState grow_with_frames(const Grower& grower, const Seed& seed, int steps, int count,
-                             GrowthWorkspace& workspace, GrowthFrames& frames, PhaseTimes* times = nullptr);
+// animation_frame_steps(steps, count) of its steps. Throws ConfigError for a
+// bad `count`.
+GrowthState grow_with_frames(const GenomeGrower& grower, const Network& network, int count,
+                             GrowthWorkspace& workspace, GrowthFrames& frames);
 
 // Grows `genome` with config.network/config.growth and returns `frames` frames
 // (ConfigError when animation_frames_problem says no).

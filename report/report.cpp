@@ -3,6 +3,7 @@
 #include "base/atomic_file.hpp"
 #include "base/config_reader.hpp"
 #include "base/errors.hpp"
+#include "growth/genome_grower.hpp"
 #include "io/mesh_io.hpp"
 #include "report/render.hpp"
 #include "report/report_animation.hpp"
@@ -11,7 +12,6 @@
 #include "run/checkpoint.hpp"
 #include "run/elites_search.hpp"
 #include "run/experiment_config.hpp"
-#include "run/growth_problem.hpp"
 #include "run/run_directory.hpp"
 
 #include <nlohmann/json.hpp>
@@ -134,7 +134,7 @@ json elites_json(Reporter& r, const Archive& archive, Growth& growth) {
         if (archive.kind() == ArchiveKind::grid) c["bins"] = archive.bins_of(elite.descriptors);
         cells.push_back(std::move(c));
     }
-    const GrowthProblem* p = grow_count > 0 ? growth() : nullptr;
+    const GenomeGrower* p = grow_count > 0 ? growth() : nullptr;
     std::size_t grown = 0;
     for (std::size_t i = 0; p && i < grow_count; ++i) {
         const auto [cell, elite] = by_fitness[i];
@@ -320,25 +320,25 @@ private:
     std::set<std::uint64_t> thumbs_;
 };
 
-// The growth problem of the run's config, made once when first needed;
-// nullptr (and a note) where its seed mesh cannot be made.
+// The growth of the run's config, made once when first needed; nullptr
+// (and a note) where its seed mesh cannot be made.
 class LazyGrowth {
 public:
     LazyGrowth(Reporter& r, const ExperimentConfig& config) : r_(r), config_(config) {}
-    const GrowthProblem* operator()() {
-        if (!problem_) try {
-                problem_.emplace(config_);
+    const GenomeGrower* operator()() {
+        if (!grower_) try {
+                grower_.emplace(config_.network, config_.growth);
             } catch (const std::exception& e) {
                 r_.note(std::string("cannot grow genomes (their seed mesh): ") + e.what());
                 return nullptr;
             }
-        return &*problem_;
+        return &*grower_;
     }
 
 private:
     Reporter& r_;
     const ExperimentConfig& config_;
-    std::optional<GrowthProblem> problem_;
+    std::optional<GenomeGrower> grower_;
 };
 
 // The best genome's growth animation into growth.glb and growth.js.
@@ -373,7 +373,7 @@ void best_json(Reporter& r, const RunInputs& in, Pictures& pictures, LazyGrowth&
               {"parent2", optional_id(best->parent2)},
               {"vertices", best->size},
               {"script", nullptr}};
-    if (const GrowthProblem* p = growth()) {
+    if (const GenomeGrower* p = growth()) {
         const GrowthState grown = p->grow(best->params);
         write_out(r.out / "best.js", mesh_script("best", encode_mesh(grown.mesh.view(), MeshFormat::glb)));
         b["script"] = "best.js";

@@ -5,7 +5,6 @@
 #include "growth/network.hpp"
 #include "io/mesh_io.hpp"
 
-#include <cmath>
 #include <cstring>
 #include <iterator>
 #include <limits>
@@ -17,10 +16,8 @@
 namespace morphogen {
 
 GrowthProblem::GrowthProblem(const ExperimentConfig& config)
-    : layers_(config.network.layers()),
-      dimension_(parameter_count(layers_)),
-      growth_(config.growth),
-      seed_(make_seed(config.growth.seed_mesh, config.growth.seed_radius)),
+    : grower_(config.network, config.growth),
+      dimension_(parameter_count(grower_.layers())),
       fitness_(config.fitness),
       descriptors_decide_validity_(config.algorithm == Algorithm::map_elites),
       keeps_exports_(config.run.export_every > 0) {
@@ -28,7 +25,7 @@ GrowthProblem::GrowthProblem(const ExperimentConfig& config)
         descriptors_.emplace(config.qd.measure_names(), canopy_params_of(config.resolved.at("fitness")));
 }
 
-std::vector<Block> GrowthProblem::blocks() const { return neuron_blocks(layers_); }
+std::vector<Block> GrowthProblem::blocks() const { return neuron_blocks(grower_.layers()); }
 
 void GrowthProblem::prepare(int workers) {
     if (workspaces_.size() < static_cast<std::size_t>(workers)) workspaces_.resize(static_cast<std::size_t>(workers));
@@ -76,29 +73,21 @@ std::vector<std::string_view> unpack_exports(const std::string& kept) {
 }  // namespace
 
 Evaluation GrowthProblem::evaluate_mesh(std::span<const double> params, int worker, double keep_from) const {
-    const Network network(Genome{layers_, std::vector<double>(params.begin(), params.end())});
-    const Grower grower(network, growth_);
-    const GrowthState state = grower.grow(seed_, workspaces_.at(static_cast<std::size_t>(worker)));
+    const GrowthState state = grower_.grow(params, workspaces_.at(static_cast<std::size_t>(worker)));
     const FitnessOutcome outcome = fitness_->evaluate(state.mesh.view());
     Evaluation evaluation{outcome.score, outcome.valid, outcome.error, static_cast<double>(state.mesh.num_vertices())};
     if (descriptors_ && evaluation.valid) {
         try {
             evaluation.descriptors = (*descriptors_)(state.mesh.view());
         } catch (const std::invalid_argument& e) {
+            // A GA only records descriptors: a birth it could not measure
+            // keeps none (empty cells in lineage.csv), so declaring
+            // descriptors never changes what a GA run computes.
             if (descriptors_decide_validity_) {
                 evaluation.valid = false;
                 evaluation.error = std::string("descriptors: ") + e.what();
             }
         }
-        // A GA only records them: a birth it could not measure stays as it is,
-        // with no descriptors (empty cells in lineage.csv), so declaring
-        // descriptors never changes what a GA run computes.
-        if (!descriptors_decide_validity_)
-            for (double d : evaluation.descriptors)
-                if (!std::isfinite(d)) {
-                    evaluation.descriptors.clear();
-                    break;
-                }
     }
     // Only a run that exports keeps files: a finished birth waits for its
     // turn to be inserted with them, so they cost memory per birth in flight.
@@ -107,15 +96,8 @@ Evaluation GrowthProblem::evaluate_mesh(std::span<const double> params, int work
     return evaluation;
 }
 
-GrowthState GrowthProblem::grow(std::span<const double> params) const {
-    const Network network(Genome{layers_, std::vector<double>(params.begin(), params.end())});
-    const Grower grower(network, growth_);
-    GrowthWorkspace workspace;
-    return grower.grow(seed_, workspace);
-}
-
 void GrowthProblem::export_genome(std::span<const double> params, const std::filesystem::path& stem) const {
-    const GrowthState state = grow(params);
+    const GrowthState state = grower_.grow(params);
     export_kept(pack_exports(state.mesh.view()), params, stem);
 }
 
@@ -124,7 +106,8 @@ void GrowthProblem::export_kept(const std::string& kept, std::span<const double>
     const std::vector<std::string_view> files = unpack_exports(kept);
     for (std::size_t i = 0; i < files.size(); ++i)
         write_file_atomically(stem.string() + export_formats[i].first, files[i]);
-    save_genome(Genome{layers_, std::vector<double>(params.begin(), params.end())}, stem.string() + ".genome.json");
+    save_genome(Genome{grower_.layers(), std::vector<double>(params.begin(), params.end())},
+                stem.string() + ".genome.json");
 }
 
 }  // namespace morphogen

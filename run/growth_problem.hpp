@@ -1,11 +1,10 @@
 #pragma once
-// The experiment as a GA Problem: a genome (parameter vector) becomes a
-// Network, grows the config's seed mesh with core's Grower, and is scored by
-// the config's Fitness. This is the one place where evolution meets meshes.
+// The experiment as a GA Problem: a genome (parameter vector) grows into a
+// mesh (GenomeGrower) that the config's Fitness scores. This is the one
+// place where evolution meets meshes.
 #include "evolution/problem.hpp"
 #include "fitness/descriptors.hpp"
-#include "growth/growth.hpp"
-#include "growth/seeds.hpp"
+#include "growth/genome_grower.hpp"
 #include "run/experiment_config.hpp"
 
 #include <filesystem>
@@ -27,16 +26,18 @@ public:
     void prepare(int workers) override;
     // Score = fitness of the grown mesh; size = its vertex count; when the
     // config has descriptors, descriptors = its measures of that same mesh.
-    // In a MAP-Elites run a valid score with a measure that throws is
-    // invalid, with the reason; a GA run only records the measures, so there
-    // a measure that throws or is non-finite leaves descriptors empty.
+    // Valid only with a finite score and finite descriptors: Fitness and
+    // DescriptorSet check them where they are made (so nothing here does).
+    // In a MAP-Elites run a valid score with a measure that throws or is
+    // non-finite is invalid, with the reason; a GA run only records the
+    // measures, so there such a measure leaves descriptors empty.
     Evaluation evaluate(std::span<const double> params, int worker) const override;
     // Also keeps, when valid with a score >= keep_from, the grown mesh's
     // export files (.glb and .obj bytes), so exporting it grows nothing.
     Evaluation evaluate_keeping(std::span<const double> params, int worker, double keep_from) const override;
 
-    // Grows one genome (single-threaded use, e.g. exporting the best).
-    GrowthState grow(std::span<const double> params) const;
+    // What grows its genomes (the config's network, growth and seed).
+    const GenomeGrower& grower() const { return grower_; }
     // Writes <stem>.glb, <stem>.obj and <stem>.genome.json for a genome, each
     // atomically (atomic_file.hpp). Throws IoError naming the file and the reason.
     void export_genome(std::span<const double> params, const std::filesystem::path& stem) const;
@@ -47,10 +48,8 @@ public:
 private:
     Evaluation evaluate_mesh(std::span<const double> params, int worker, double keep_from) const;
 
-    std::vector<int> layers_;
+    GenomeGrower grower_;
     std::size_t dimension_;
-    GrowthParams growth_;
-    Seed seed_;
     std::shared_ptr<const Fitness> fitness_;
     std::optional<DescriptorSet> descriptors_;  // when the config has descriptors
     bool descriptors_decide_validity_;          // MAP-Elites: a failed measure makes the birth invalid

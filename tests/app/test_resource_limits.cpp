@@ -1,6 +1,6 @@
 // Resource limits (run/resource_estimate.hpp): the estimates against measured
 // facts of real growths and runs, the refusals, and the options that lift them.
-#include "growth/growth.hpp"
+#include "growth/genome_grower.hpp"
 #include "growth/network.hpp"
 #include "run/experiment_config.hpp"
 #include "run/genome_source.hpp"
@@ -21,7 +21,7 @@ namespace {
 ExperimentConfig config_of(const std::string& text) { return read_experiment_config(nlohmann::json::parse(text), "test"); }
 
 ResourceEstimate estimate_of(const ExperimentConfig& config, const Workload& workload) {
-    return estimate_resources(config, seed_extent(make_seed(config.growth.seed_mesh, config.growth.seed_radius)),
+    return estimate_resources(config, seed_extent(make_seed(config.growth)),
                               workload);
 }
 
@@ -111,15 +111,14 @@ TEST_CASE("vertex and reach bounds hold for real growths, and are reached by the
     const ExperimentConfig config =
         config_of(R"({"growth": {"steps": 12, "split_area": 1e-12, "max_vertices": 3000, "speed": 0.5, "budget": 3}})");
     const ResourceEstimate e = estimate_of(config, evolution_on(1));
-    const Seed seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
+    const GenomeGrower grower(config.network, config.growth);
     for (std::uint64_t genome_seed : {1, 2, 3, 4}) {
-        const Network network(random_genome(config.network.layers(), 2.0, genome_seed));
+        const Network network(random_genome(grower.layers(), 2.0, genome_seed));
         GrowthWorkspace workspace;
-        double vertex_steps = seed.mesh.num_vertices();  // step 0 thinks over the seed
-        const GrowthState state =
-            Grower(network, config.growth).grow(seed, workspace, nullptr, [&](const GrowthState& s, int step) {
-                if (step + 1 < config.growth.steps) vertex_steps += s.mesh.num_vertices();
-            });
+        double vertex_steps = grower.seed().mesh.num_vertices();  // step 0 thinks over the seed
+        const GrowthState state = grower.grow(network, workspace, [&](const GrowthState& s, int step) {
+            if (step + 1 < config.growth.steps) vertex_steps += s.mesh.num_vertices();
+        });
         CHECK(vertex_steps <= e.vertex_steps);
         CHECK(vertex_steps >= 0.99 * e.vertex_steps);
         CHECK(state.mesh.num_vertices() == e.max_vertices);

@@ -2,7 +2,7 @@
 // z-buffer agreeing cell for cell with CGAL ray shooting.
 #include "fitness/canopy.hpp"
 #include "fitness/measures.hpp"
-#include "growth/growth.hpp"
+#include "growth/genome_grower.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>
@@ -119,20 +119,18 @@ TEST_CASE("z-buffer and ray shooting agree when vertices sit on cell centres", "
 }
 
 TEST_CASE("z-buffer and ray shooting agree on grown meshes", "[fitness][canopy][grown]") {
-    NetworkParams network_params;
     GrowthParams growth;
     growth.steps = 120;
-    const Seed seed = make_seed(growth.seed_mesh, growth.seed_radius);
+    const GenomeGrower grower(NetworkParams{}, growth);
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> uniform(-2.0, 2.0);
     int above = 0;
     for (int g = 0; g < 12; ++g) {
-        Genome genome{network_params.layers(), {}};
+        Genome genome{grower.layers(), {}};
         genome.params.resize(parameter_count(genome.layers));
         for (double& p : genome.params) p = uniform(rng);
-        const Network network(genome);
         GrowthWorkspace workspace;
-        const GrowthState state = Grower(network, growth).grow(seed, workspace);
+        const GrowthState state = grower.grow(genome.params, workspace);
         for (double height : {2.0, 5.0, 10.0}) {
             const CanopyParams params{height, 0.1};
             const auto fast = canopy_cells(state.mesh.view(), params);
@@ -157,19 +155,16 @@ TEST_CASE("canopy evaluation time", "[.][perf]") {
     WARN("bumpy blob, " << blob.positions.size() << " vertices: " << blob_ms << " ms per canopy (area " << blob_area
                         << ")");
     // Grown meshes (default growth: 200 steps, up to 4000 vertices).
-    NetworkParams network_params;
-    const GrowthParams growth;
-    const Seed seed = make_seed(growth.seed_mesh, growth.seed_radius);
+    const GenomeGrower grower(NetworkParams{}, GrowthParams{});
     std::mt19937_64 rng(11);
     std::uniform_real_distribution<double> uniform(-2.0, 2.0);
     for (int g = 0; g < 4; ++g) {
-        Genome genome{network_params.layers(), {}};
+        Genome genome{grower.layers(), {}};
         genome.params.resize(parameter_count(genome.layers));
         for (double& p : genome.params) p = uniform(rng);
-        const Network network(genome);
         GrowthWorkspace workspace;
         const auto start = std::chrono::steady_clock::now();
-        const GrowthState state = Grower(network, growth).grow(seed, workspace);
+        const GrowthState state = grower.grow(genome.params, workspace);
         const double grow_ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
         const auto [ms, area] = time_ms(state.mesh.view(), 100);

@@ -2,7 +2,7 @@
 // side's own check, CGAL's does_self_intersect (mesh_self_intersects): grown
 // meshes never self-intersect, where "allow" grows many that do.
 #include "fitness/cgal_geometry.hpp"
-#include "growth/growth.hpp"
+#include "growth/genome_grower.hpp"
 #include "tests/support/test_genomes.hpp"
 
 #include <catch2/catch.hpp>
@@ -26,8 +26,7 @@ GrowthParams branching(GrowthParams params) {
 }
 
 bool grows_self_intersecting(const Network& network, const GrowthParams& params, GrowthWorkspace& workspace) {
-    const Seed seed = make_seed(params.seed_mesh, params.seed_radius);
-    return mesh_self_intersects(Grower(network, params).grow(seed, workspace).mesh.view());
+    return mesh_self_intersects(GenomeGrower(NetworkParams{}, params).grow(network, workspace).mesh.view());
 }
 
 // Genomes [first, first + count) of random_test_genome (init range 2, as

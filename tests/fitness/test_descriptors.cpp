@@ -136,6 +136,10 @@ TEST_CASE("degenerate meshes give non-finite measures or errors", "[fitness][des
     wall.positions = {{0, 0, 0}, {1, 0, 0}, {1, 0, 5}};
     wall.faces = {{0, 1, 2}};
     CHECK_FALSE(std::isfinite(measure("slenderness", wall)));
+    // A set refuses it, naming its place and measure: descriptors that reach a search are finite.
+    const DescriptorSet slender({"height", "slenderness"}, {});
+    CHECK_THROWS_WITH(slender(wall.view()), Catch::Contains("non-finite descriptor 1 (slenderness = inf)"));
+    CHECK(DescriptorSet({"height"}, {})(wall.view()) == std::vector<double>{5.0});
     const MeshArrays empty;
     const DescriptorSet set({"height", "spread"}, {});
     CHECK_THROWS_AS(set(empty.view()), std::invalid_argument);

@@ -5,6 +5,7 @@
 #include "growth/growth.hpp"
 #include "growth/seeds.hpp"
 #include "mesh/face_pair.hpp"
+#include "tests/support/phase_recorder.hpp"
 #include "tests/support/test_genomes.hpp"
 
 #include <catch2/catch.hpp>
@@ -118,19 +119,23 @@ TEST_CASE("grown with collisions prevented, no two faces intersect, the same bit
     params.collisions = Collisions::prevent;
     const Seed seed = make_seed("icosahedron", 1.0);
     GrowthWorkspace shared;  // reused across genomes: nothing of one may leak into the next
+    long guarded_flips = 0;
     for (std::uint64_t g = 1; g <= 20; ++g) {
         INFO("genome " << g);
         const Network network(random_test_genome({45, 30, 15}, g));
-        const GrowthState a = Grower(network, params).grow(seed, shared, nullptr, [](const GrowthState& s, int) {
+        const GrowthState a = Grower(network, params).grow(seed, shared, [](const GrowthState& s, int) {
             REQUIRE(s.mesh.check().empty());
         });
         CHECK(intersecting_pairs(a.mesh) == 0);
         GrowthWorkspace fresh;
-        PhaseTimes times;
-        const GrowthState b = Grower(network, params).grow(seed, fresh, &times);  // timed
+        PhaseRecorder phases;
+        const GrowthState b = Grower(network, params).grow(seed, fresh, {}, &phases);  // observed
         CHECK(a.mesh.faces() == b.mesh.faces());
         CHECK(a.mesh.positions() == b.mesh.positions());
         CHECK(a.outputs == b.outputs);
-        CHECK(times.collide > 0.0);
+        // Every move is settled; not every genome proposes a flip the guard must test.
+        CHECK(phases.count(PhaseRecorder::Hook::end, GrowthPhase::settle) == params.steps);
+        guarded_flips += phases.count(PhaseRecorder::Hook::end, GrowthPhase::flip_guard);
     }
+    CHECK(guarded_flips > 0);
 }

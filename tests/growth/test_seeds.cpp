@@ -97,3 +97,13 @@ TEST_CASE("seed files: accepted when closed and outward, refused clearly otherwi
     write_text(garbage, "v 0 0 zero\n");
     CHECK_THROWS_WITH(make_seed(garbage, 1), Catch::Contains(garbage));
 }
+
+TEST_CASE("make_seed of growth keys: the seed growth.seed_mesh names, at growth.seed_radius", "[seeds]") {
+    GrowthParams growth;
+    growth.seed_mesh = "tetrahedron";
+    growth.seed_radius = 3.0;
+    const Seed seed = make_seed(growth), expected = make_seed("tetrahedron", 3.0);
+    CHECK(seed.mesh.positions() == expected.mesh.positions());
+    CHECK(seed.mesh.faces() == expected.mesh.faces());
+    CHECK(seed.directions == expected.directions);
+}

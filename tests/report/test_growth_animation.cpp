@@ -190,13 +190,12 @@ TEST_CASE("recorded frames are the growth's meshes at their steps, without chang
 
     // The same growth, watched step by step.
     const Network network(genome);
-    const Seed seed = make_seed(config.growth.seed_mesh, config.growth.seed_radius);
-    std::vector<MeshArrays> every{{seed.mesh.positions(), seed.mesh.faces()}};
+    const GenomeGrower grower(config.network, config.growth);
+    std::vector<MeshArrays> every{{grower.seed().mesh.positions(), grower.seed().mesh.faces()}};
     GrowthWorkspace workspace;
-    const GrowthState plain = Grower(network, config.growth)
-                                  .grow(seed, workspace, nullptr, [&](const GrowthState& state, int) {
-                                      every.push_back({state.mesh.positions(), state.mesh.faces()});
-                                  });
+    const GrowthState plain = grower.grow(network, workspace, [&](const GrowthState& state, int) {
+        every.push_back({state.mesh.positions(), state.mesh.faces()});
+    });
     REQUIRE(every.size() == 41);
     for (std::size_t i = 0; i < frames.steps.size(); ++i) {
         INFO("frame " << i << ", step " << frames.steps[i]);
@@ -212,8 +211,7 @@ TEST_CASE("recorded frames are the growth's meshes at their steps, without chang
     // grow_with_frames returns what grow() does.
     GrowthFrames again;
     GrowthWorkspace workspace2;
-    const Grower grower(network, config.growth);
-    const GrowthState state = grow_with_frames(grower, seed, 40, 9, workspace2, again);
+    const GrowthState state = grow_with_frames(grower, network, 9, workspace2, again);
     CHECK(state.mesh.positions() == plain.mesh.positions());
     CHECK(state.mesh.faces() == plain.mesh.faces());
     CHECK(state.outputs == plain.outputs);

@@ -1,0 +1,42 @@
+#pragma once
+// One config's growth: its network shape, growth keys and seed mesh, and
+// what turns a genome into a grown mesh with them (docs/algorithm.md §3-§6).
+// Every command, the search's problem and the tests grow genomes here.
+#include "growth/growth.hpp"
+#include "growth/growth_params.hpp"
+#include "growth/network.hpp"
+#include "growth/seeds.hpp"
+
+#include <span>
+#include <vector>
+
+namespace morphogen {
+
+class GenomeGrower {
+public:
+    // Builds the seed mesh once (make_seed: IoError/MeshError for a bad seed file).
+    GenomeGrower(const NetworkParams& network, const GrowthParams& growth);
+
+    const std::vector<int>& layers() const { return layers_; }  // network.layers()
+    const GrowthParams& params() const { return growth_; }
+    const Seed& seed() const { return seed_; }
+
+    // The state after growth.steps steps of `network` from the seed
+    // (Grower::grow, with its ConfigError for a network that does not fit
+    // the growth). `workspace` may be reused from genome to genome, one per
+    // thread; `after_step` and `phases` as Grower::grow takes them.
+    GrowthState grow(const Network& network, GrowthWorkspace& workspace, const StepObserver& after_step = {},
+                     GrowthObserver* phases = nullptr) const;
+    // The same for a genome's parameters laid out for layers() (§6.1);
+    // ConfigError for a wrong count or a non-finite parameter (Network).
+    GrowthState grow(std::span<const double> genome, GrowthWorkspace& workspace) const;
+    // With a workspace of its own: one genome, e.g. to export it.
+    GrowthState grow(std::span<const double> genome) const;
+
+private:
+    std::vector<int> layers_;
+    GrowthParams growth_;
+    Seed seed_;
+};
+
+}  // namespace morphogen
