@@ -6,6 +6,7 @@
 #include "app/commands.hpp"
 #include "app/fma_peak.hpp"
 #include "app/growth_phase_timer.hpp"
+#include "evolution/worker_threads.hpp"
 #include "growth/genome_grower.hpp"
 #include "run/experiment_config.hpp"
 #include "run/genome_source.hpp"
@@ -88,7 +89,7 @@ int run_bench(const BenchOptions& options) {
     std::vector<Network> networks;
     for (int i = 0; i < options.genomes; ++i)
         networks.emplace_back(random_genome(layers, config.evolution.init_range, options.seed + i));
-    const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+    const int threads = resolve_threads(options.threads);
 
     std::vector<BenchPass> passes;
     std::vector<double> peaks;  // measured between passes: the machine's speed drifts

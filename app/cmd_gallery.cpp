@@ -3,6 +3,7 @@
 #include "app/mesh_stats.hpp"
 #include "app/resource_options.hpp"
 #include "base/errors.hpp"
+#include "evolution/worker_threads.hpp"
 #include "growth/genome_grower.hpp"
 #include "io/mesh_io.hpp"
 #include "report/render.hpp"
@@ -52,7 +53,7 @@ std::string entry_name(int index, const std::string& extension) {
 int run_gallery(const GalleryOptions& options) {
     const ExperimentConfig config = load_experiment_config(options.config);
     const GenomeGrower grower(config.network, config.growth);
-    const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+    const int threads = resolve_threads(options.threads);
     check_resource_limits(config, grower.seed(),
                           Workload{.threads = threads, .writers = options.format != "none" ? double(threads) : 0.0,
                                    .kept_meshes = double(options.count)},
@@ -63,8 +64,7 @@ int run_gallery(const GalleryOptions& options) {
     if (ec) throw IoError(options.out + ": cannot create directory: " + ec.message());
 
     std::vector<GalleryEntry> entries(options.count);
-    if (options.threads > 0) omp_set_num_threads(options.threads);
-#pragma omp parallel
+#pragma omp parallel num_threads(threads)
     {
         GrowthWorkspace workspace;
 #pragma omp for schedule(dynamic)

@@ -2,7 +2,7 @@
 
 #include "evolution/full_cma.hpp"
 #include "evolution/ga_state_json.hpp"
-#include "evolution/state_json_read.hpp"
+#include "base/checked_json.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -10,10 +10,10 @@
 namespace morphogen {
 
 using nlohmann::json;
-using state_json::fail;
-using state_json::member;
-using state_json::read_finite;
-using state_json::read_u64;
+using checked_json::fail;
+using checked_json::member;
+using checked_json::read_finite;
+using checked_json::read_u64;
 
 namespace {
 constexpr const char* kVectors[] = {"mean", "variances", "path_c", "path_sigma"};

@@ -1,6 +1,6 @@
 #include "evolution/ga_state_json.hpp"
 
-#include "evolution/state_json_read.hpp"
+#include "base/checked_json.hpp"
 
 #include <cmath>
 #include <set>
@@ -10,10 +10,10 @@
 namespace morphogen {
 
 using nlohmann::json;
-using state_json::fail;
-using state_json::member;
-using state_json::read_finite;
-using state_json::read_u64;
+using checked_json::fail;
+using checked_json::member;
+using checked_json::read_finite;
+using checked_json::read_u64;
 
 namespace {
 std::optional<std::uint64_t> read_parent(const json& value, const std::string& path) {

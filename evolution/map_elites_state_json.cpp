@@ -3,7 +3,7 @@
 #include "evolution/emitter_registry.hpp"
 #include "evolution/emitter_state_json.hpp"
 #include "evolution/ga_state_json.hpp"
-#include "evolution/state_json_read.hpp"
+#include "base/checked_json.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -14,10 +14,10 @@
 namespace morphogen {
 
 using nlohmann::json;
-using state_json::fail;
-using state_json::member;
-using state_json::read_finite;
-using state_json::read_u64;
+using checked_json::fail;
+using checked_json::member;
+using checked_json::read_finite;
+using checked_json::read_u64;
 
 namespace {
 std::vector<double> read_numbers(const json& value, const std::string& path) {

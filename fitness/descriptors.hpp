@@ -36,8 +36,8 @@ public:
     DescriptorSet(const std::vector<std::string>& names, CanopyParams canopy);
     // One value per name, in order, each finite. Throws std::invalid_argument
     // for a malformed mesh, one without vertices, or a measure that is not
-    // finite on it ("non-finite descriptor 1 (spread = inf)"): the only
-    // finiteness check descriptors get between a genome and a search.
+    // finite on it ("non-finite descriptor 1 (spread = inf)"), naming the
+    // measure; evolution's evaluate_safely guards any other Problem the same way.
     std::vector<double> operator()(MeshView mesh) const;
     const std::vector<std::string>& names() const { return names_; }
 

@@ -20,7 +20,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
         // validate also builds the seed. Only a built-in one here: a seed file
         // path would make the fuzzer read arbitrary files (/dev/zero never ends).
         if (is_builtin_seed(config.growth.seed_mesh))
-            (void)make_seed(config.growth.seed_mesh, config.growth.seed_radius);
+            (void)make_seed(config.growth);
     });
     if (!valid) return 0;
     // A checkpoint stores the resolved config and refuses one that does not

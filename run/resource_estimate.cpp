@@ -478,7 +478,7 @@ std::vector<ConfigIssue> resource_issues(const ResourceEstimate& e, const Resour
 void check_resource_limits(const ExperimentConfig& config, const Workload& workload, const ResourceLimits& limits,
                            const std::string& source) {
     if (!limits.enabled) return;
-    check_resource_limits(config, make_seed(config.growth.seed_mesh, config.growth.seed_radius), workload, limits,
+    check_resource_limits(config, make_seed(config.growth), workload, limits,
                           source);
 }
 

@@ -1,9 +1,9 @@
-#include "evolution/state_json_read.hpp"
+#include "base/checked_json.hpp"
 
 #include <cmath>
 #include <stdexcept>
 
-namespace morphogen::state_json {
+namespace morphogen::checked_json {
 
 void fail(const std::string& path, const std::string& what) { throw std::invalid_argument(path + ": " + what); }
 
@@ -26,4 +26,4 @@ double read_finite(const nlohmann::json& value, const std::string& path) {
     return v;
 }
 
-}  // namespace morphogen::state_json
+}  // namespace morphogen::checked_json

@@ -1,12 +1,15 @@
 #pragma once
-// Small checked readers shared by the search states' JSON (ga_state_json,
-// map_elites_state_json). Each throws std::invalid_argument("<path>: <defect>").
+// Strict readers for the JSON morphogen writes itself (the search states in a
+// checkpoint): a missing key or a wrong value is a defect of the file, so each
+// throws std::invalid_argument("<path>: <defect>") at the first one, and no
+// default is filled in. Configs a person writes go through config_reader.hpp,
+// which collects every problem and fills in defaults.
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
 #include <string>
 
-namespace morphogen::state_json {
+namespace morphogen::checked_json {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what);
 // object[key], failing if `object` is not an object or lacks the key.
@@ -15,4 +18,4 @@ std::uint64_t read_u64(const nlohmann::json& value, const std::string& path);
 // A finite number ("expected a number" / "not finite" otherwise).
 double read_finite(const nlohmann::json& value, const std::string& path);
 
-}  // namespace morphogen::state_json
+}  // namespace morphogen::checked_json
