@@ -9,7 +9,7 @@
 #include "run/checkpoint_checks.hpp"
 #include "run/config_migration.hpp"
 #include "run/experiment_config.hpp"
-#include "run/fnv_hash.hpp"
+#include "base/fnv_hash.hpp"
 #include "run/run_search.hpp"
 
 #include <stdexcept>

@@ -10,7 +10,7 @@
 #include "evolution/individual.hpp"
 #include "evolution/pipeline.hpp"
 #include "run/growth_problem.hpp"
-#include "run/io_thread.hpp"
+#include "base/io_thread.hpp"
 #include "run/progress.hpp"
 #include "run/run_search.hpp"
 #include "run/run_session.hpp"

@@ -2,7 +2,7 @@
 // One session of a run (`evolve`, or one `resume`): its directory, config,
 // state so far, open record files and logs, as the run loop
 // (evolution_run.hpp) and its recorder (run_recorder.hpp) share them.
-#include "run/append_file.hpp"
+#include "base/append_file.hpp"
 #include "run/checkpoint.hpp"
 #include "run/experiment_config.hpp"
 #include "run/run_directory.hpp"

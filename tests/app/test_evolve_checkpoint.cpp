@@ -4,7 +4,7 @@
 #include "base/errors.hpp"
 #include "run/checkpoint.hpp"
 #include "run/checkpoint_checks.hpp"
-#include "run/fnv_hash.hpp"
+#include "base/fnv_hash.hpp"
 #include "tests/app/evolve_test_support.hpp"
 #include "tests/app/search_states.hpp"
 

@@ -3,7 +3,7 @@
 // archive.csv against lineage.csv and the checkpoint, damaged archives
 // refused, and CVT centroids carried by the checkpoint.
 #include "run/checkpoint.hpp"
-#include "run/fnv_hash.hpp"
+#include "base/fnv_hash.hpp"
 #include "run/run_records.hpp"
 #include "tests/app/evolve_test_support.hpp"
 #include "tests/app/search_states.hpp"

@@ -1,6 +1,6 @@
 // history.csv / lineage.csv rows and the append-only files behind them.
 #include "base/errors.hpp"
-#include "run/append_file.hpp"
+#include "base/append_file.hpp"
 #include "run/growth_problem.hpp"
 #include "run/run_records.hpp"
 #include "tests/app/evolve_test_support.hpp"

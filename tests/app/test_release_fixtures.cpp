@@ -5,7 +5,7 @@
 #include "run/checkpoint.hpp"
 #include "run/config_migration.hpp"
 #include "run/experiment_config.hpp"
-#include "run/fnv_hash.hpp"
+#include "base/fnv_hash.hpp"
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>

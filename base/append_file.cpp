@@ -1,4 +1,4 @@
-#include "run/append_file.hpp"
+#include "base/append_file.hpp"
 
 #include "base/atomic_file.hpp"
 #include "base/errors.hpp"

@@ -3,7 +3,7 @@
 // and the FNV-1a hash of its contents, so a checkpoint can record exactly
 // which prefix belongs to it; rows written after the checkpoint are cut off
 // on resume.
-#include "run/fnv_hash.hpp"
+#include "base/fnv_hash.hpp"
 
 #include <cstdint>
 #include <filesystem>

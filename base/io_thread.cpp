@@ -1,4 +1,4 @@
-#include "run/io_thread.hpp"
+#include "base/io_thread.hpp"
 
 namespace morphogen {
 
