@@ -1,7 +1,5 @@
 #include "evolution/batch.hpp"
 
-#include <omp.h>
-
 #include <cmath>
 #include <exception>
 #include <string>

@@ -1,6 +1,6 @@
 #pragma once
 // What both searches share between a genome's evaluation and its insertion:
-// scoring safely, keeping the best, and the thread count of a run.
+// scoring safely and keeping the best.
 #include "evolution/individual.hpp"
 #include "evolution/problem.hpp"
 
