@@ -38,6 +38,13 @@ public:
     // The same, but every candidate intersection is constructed exactly
     // (CGAL Epeck) and the nearest is rounded once: slow, for reference tests.
     std::optional<Vec3> first_hit_exact(const Vec3& origin, const Vec3& direction) const;
+    // first_hit's point and the index (in the mesh given to the constructor)
+    // of the face it lies on.
+    struct Hit {
+        Vec3 point;
+        int face;
+    };
+    std::optional<Hit> first_hit_face(const Vec3& origin, const Vec3& direction) const;
     int num_triangles() const;
 
 private:

@@ -31,6 +31,7 @@ int orient2d_exact(double ax, double ay, double bx, double by, double cx, double
 
 struct RayCaster::Impl {
     Triangles triangles;  // must outlive the tree (primitives hold iterators)
+    std::vector<int> face_of;  // per triangle: its face in the mesh
     Tree tree;
 };
 
@@ -46,6 +47,7 @@ RayCaster::RayCaster(MeshView mesh, Faces which) : impl_(std::make_unique<Impl>(
             orient2d_exact(a.x(), a.y(), b.x(), b.y(), c.x(), c.y()) == 0)
             continue;
         impl_->triangles.emplace_back(a, b, c);
+        impl_->face_of.push_back(static_cast<int>(&f - mesh.faces.data()));
     }
     impl_->tree.insert(impl_->triangles.cbegin(), impl_->triangles.cend());
     // Built now: the lazy build inside a const query would race between threads.
@@ -59,14 +61,21 @@ RayCaster& RayCaster::operator=(RayCaster&&) noexcept = default;
 int RayCaster::num_triangles() const { return static_cast<int>(impl_->triangles.size()); }
 
 std::optional<Vec3> RayCaster::first_hit(const Vec3& origin, const Vec3& direction) const {
+    const std::optional<Hit> hit = first_hit_face(origin, direction);
+    if (!hit) return std::nullopt;
+    return hit->point;
+}
+
+std::optional<RayCaster::Hit> RayCaster::first_hit_face(const Vec3& origin, const Vec3& direction) const {
     if (impl_->triangles.empty()) return std::nullopt;
     const Kernel::Ray_3 ray(point(origin), Kernel::Vector_3(direction.x(), direction.y(), direction.z()));
     const auto hit = impl_->tree.first_intersection(ray);
     if (!hit) return std::nullopt;
-    if (const Point3* p = boost::get<Point3>(&hit->first)) return vec(*p);
+    const int face = impl_->face_of[static_cast<std::size_t>(hit->second - impl_->triangles.cbegin())];
+    if (const Point3* p = boost::get<Point3>(&hit->first)) return Hit{vec(*p), face};
     if (const Kernel::Segment_3* s = boost::get<Kernel::Segment_3>(&hit->first)) {
         const Vec3 a = vec(s->source()), b = vec(s->target());
-        return (a - origin).dot(direction) <= (b - origin).dot(direction) ? a : b;
+        return Hit{(a - origin).dot(direction) <= (b - origin).dot(direction) ? a : b, face};
     }
     return std::nullopt;
 }

@@ -17,9 +17,12 @@ constexpr double kMaxRays = light_max_rays_per_sun;
 
 double radians(double degrees) { return degrees * std::numbers::pi / 180.0; }
 
-// One sun's rays, given the tree of the mesh's triangles.
-double light_with(MeshView mesh, const RayCaster& caster, const Vec3& to_sun, double spacing, double min_height) {
-    if (mesh.positions.empty()) return 0.0;
+// Casts one sun's lattice of rays (light.hpp) at the caster's triangles and
+// calls on_hit(hit) for each ray whose first hit is at z >= min_height.
+template <class OnHit>
+void cast_lattice(MeshView mesh, const RayCaster& caster, const Vec3& to_sun, double spacing, double min_height,
+                  OnHit&& on_hit) {
+    if (mesh.positions.empty()) return;
     const Vec3 d = -to_sun.normalized();
     // Basis (u, v) of the plane perpendicular to d; axis-aligned for a vertical sun.
     const Vec3 helper = std::abs(d.z()) > 0.9 ? Vec3::UnitX() : Vec3::UnitZ();
@@ -37,14 +40,19 @@ double light_with(MeshView mesh, const RayCaster& caster, const Vec3& to_sun, do
     if (!(rays <= kMaxRays))
         throw std::length_error("light: " + std::to_string(rays) + " rays per sun; increase the spacing");
     const double start = tmin - 1.0;  // every ray starts before the mesh
-    long long captured = 0;
     for (double k = k0; k <= k1; ++k) {
         for (double l = l0; l <= l1; ++l) {
             const Vec3 origin = (k + 0.5) * spacing * u + (l + 0.5) * spacing * v + start * d;
-            const auto hit = caster.first_hit(origin, d);
-            if (hit && hit->z() >= min_height) ++captured;
+            const auto hit = caster.first_hit_face(origin, d);
+            if (hit && hit->point.z() >= min_height) on_hit(*hit);
         }
     }
+}
+
+// One sun's light, given the tree of the mesh's triangles.
+double light_with(MeshView mesh, const RayCaster& caster, const Vec3& to_sun, double spacing, double min_height) {
+    long long captured = 0;
+    cast_lattice(mesh, caster, to_sun, spacing, min_height, [&](const RayCaster::Hit&) { ++captured; });
     return static_cast<double>(captured) * spacing * spacing;
 }
 
@@ -88,6 +96,22 @@ double light_captured(MeshView mesh, const LightParams& params) {
     double sum = 0.0;
     for (const Vec3& sun : suns) sum += light_with(mesh, caster, sun, params.spacing, params.min_height);
     return sum / static_cast<double>(suns.size());
+}
+
+std::vector<double> light_per_face(MeshView mesh, const LightParams& params) {
+    check_mesh_view(mesh);
+    check(params);
+    const std::vector<Vec3> suns = sun_directions(params);
+    if (suns.empty()) throw std::invalid_argument("light needs at least one sun");
+    const RayCaster caster(mesh, RayCaster::Faces::non_degenerate);
+    std::vector<long long> rays(mesh.faces.size(), 0);
+    for (const Vec3& sun : suns)
+        cast_lattice(mesh, caster, sun, params.spacing, params.min_height,
+                     [&](const RayCaster::Hit& hit) { ++rays[static_cast<std::size_t>(hit.face)]; });
+    std::vector<double> light(rays.size());
+    const double per_ray = params.spacing * params.spacing / static_cast<double>(suns.size());
+    for (std::size_t f = 0; f < rays.size(); ++f) light[f] = static_cast<double>(rays[f]) * per_ray;
+    return light;
 }
 
 }  // namespace morphogen

@@ -36,4 +36,9 @@ double light_from(MeshView mesh, const Vec3& to_sun, double spacing, double min_
 // Mean of light_from over sun_directions(params). Thread-safe.
 double light_captured(MeshView mesh, const LightParams& params);
 
+// The same light, face by face: per face of `mesh`, the cross-section of the
+// rays whose first hit lies on it, mean over the suns (so the entries add up
+// to light_captured, up to rounding). Thread-safe.
+std::vector<double> light_per_face(MeshView mesh, const LightParams& params);
+
 }  // namespace morphogen

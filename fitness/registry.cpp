@@ -7,6 +7,7 @@
 #include "fitness/cgal_geometry.hpp"
 #include "fitness/light.hpp"
 #include "fitness/measures.hpp"
+#include "fitness/plant_fitness.hpp"
 #include "fitness/tree_fitness.hpp"
 #include "fitness/tree_sections.hpp"
 
@@ -48,6 +49,16 @@ public:
 
 private:
     TreeFitnessParams params_;
+};
+
+class PlantFunction final : public FitnessFunction {
+public:
+    explicit PlantFunction(PlantFitnessParams params) : params_(std::move(params)) {}
+    std::string type() const override { return "plant"; }
+    double evaluate(MeshView mesh) const override { return plant_score(mesh, params_).score; }
+
+private:
+    PlantFitnessParams params_;
 };
 
 // A measure without keys (height, area, ...).
@@ -124,6 +135,15 @@ std::unique_ptr<FitnessFunction> read_tree(ObjectReader& reader) {
     return std::make_unique<TreeFunction>(std::move(params));
 }
 
+std::unique_ptr<FitnessFunction> read_plant(ObjectReader& reader) {
+    PlantFitnessParams params;
+    read_light_params(reader, params.light);
+    params.half_saturation = reader.number("half_saturation", params.half_saturation, 0.0, kBig, /*min_exclusive=*/true);
+    params.moment_cost = reader.number("moment_cost", params.moment_cost, 0.0, kBig);
+    params.root_height = reader.number("root_height", params.root_height, -kBig, kBig);
+    return std::make_unique<PlantFunction>(std::move(params));
+}
+
 double vertex_count(MeshView mesh) { return static_cast<double>(mesh.positions.size()); }
 double face_count(MeshView mesh) { return static_cast<double>(mesh.faces.size()); }
 double self_intersecting(MeshView mesh) { return mesh_self_intersects(mesh) ? 1.0 : 0.0; }
@@ -144,6 +164,7 @@ const TypeEntry kTypes[] = {
     {"canopy", read_canopy, nullptr},
     {"light", read_light, nullptr},
     {"tree", read_tree, nullptr},
+    {"plant", read_plant, nullptr},
     {"sum", read_sum, nullptr},
     {"height", nullptr, mesh_height},
     {"footprint", nullptr, mesh_footprint},

@@ -5,6 +5,7 @@
 #include "evolution/pipeline.hpp"
 #include "fitness/canopy.hpp"
 #include "fitness/light.hpp"
+#include "fitness/plant_fitness.hpp"
 #include "fitness/tree_fitness.hpp"
 #include "growth/network.hpp"
 #include "evolution/worker_threads.hpp"
@@ -156,13 +157,15 @@ void add_fitness(FitnessCost& cost, const json& section, const std::string& path
     } else if (type == "canopy") {
         const json& cell = at_or_null(section, "cell");
         add_canopy(cost, cell.is_number() ? cell.get<double>() : CanopyParams{}.cell, path, faces, reach);
-    } else if (type == "light" || type == "tree") {
-        // A tree casts the rays of its light (its own defaults) and takes
-        // sections and the volume, as cheap as a measure.
-        LightParams p = type == "tree" ? TreeFitnessParams{}.light : LightParams{};
-        if (type == "tree") {
+    } else if (type == "light" || type == "tree" || type == "plant") {
+        // A tree or plant casts the rays of its light (its own defaults) and
+        // takes sections and the volume, or the skeleton and the moment, as
+        // cheap as a measure.
+        LightParams p = type == "tree" ? TreeFitnessParams{}.light : type == "plant" ? PlantFitnessParams{}.light : LightParams{};
+        if (type != "light") {
             cost.bytes = std::max(cost.bytes, faces * measure_bytes_per_face);
-            cost.work.push_back({"tree sections and volume", {path + ".type"}, 2 * faces * measure_second_per_face});
+            cost.work.push_back({type == "tree" ? "tree sections and volume" : "plant skeleton and moment", {path + ".type"},
+                                 2 * faces * measure_second_per_face});
         }
         if (const json& e = at_or_null(section, "elevations_deg"); e.is_array()) p.elevations_deg = e.get<std::vector<double>>();
         if (const json& a = at_or_null(section, "azimuths_deg"); a.is_array()) p.azimuths_deg = a.get<std::vector<double>>();

@@ -66,6 +66,7 @@ std::vector<json> fitness_sections() {
     return {json{{"type", "canopy"}},
             json{{"type", "light"}},
             json{{"type", "tree"}},
+            json{{"type", "plant"}},
             json{{"type", "height"}},
             json{{"type", "sum"}, {"terms", json::array({json{{"type", "canopy"}}, json{{"type", "light"}}})}}};
 }
@@ -229,6 +230,7 @@ TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]
             if (section == "fitness" && (key == "trunk_target" || key == "trunk_power" || key == "loops_target" ||
                                          key == "material_cost" || key == "root_height"))
                 document[section]["type"] = "tree";
+            if (section == "fitness" && (key == "half_saturation" || key == "moment_cost")) document[section]["type"] = "plant";
             if (section == "growth" && key == "turn_rate") document[section]["mode"] = "branching";
             return document;
         };

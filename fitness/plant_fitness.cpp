@@ -1,0 +1,72 @@
+#include "fitness/plant_fitness.hpp"
+
+#include "fitness/measures.hpp"
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cmath>
+
+namespace morphogen {
+
+namespace {
+
+double face_area(MeshView mesh, const Face& f) {
+    const Vec3& a = mesh.positions[f[0]];
+    return 0.5 * (mesh.positions[f[1]] - a).cross(mesh.positions[f[2]] - a).norm();
+}
+
+// The foot's axis: the mean (x, y) of the vertices within root_height of
+// the lowest one.
+Eigen::Vector2d foot_axis(MeshView mesh, double zmin, double root_height) {
+    Eigen::Vector2d sum = Eigen::Vector2d::Zero();
+    int count = 0;
+    for (const Vec3& p : mesh.positions)
+        if (p.z() <= zmin + std::max(root_height, 0.0)) sum += p.head<2>(), ++count;
+    return sum / static_cast<double>(count);
+}
+
+double bending_moment(MeshView mesh, const Eigen::Vector2d& axis) {
+    double moment = 0.0;
+    for (const Face& f : mesh.faces) {
+        const Vec3 centroid = (mesh.positions[f[0]] + mesh.positions[f[1]] + mesh.positions[f[2]]) / 3.0;
+        moment += face_area(mesh, f) * (centroid.head<2>() - axis).norm();
+    }
+    return moment;
+}
+
+}  // namespace
+
+double saturating_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation) {
+    const double K = half_saturation;
+    double light = 0.0;
+    for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
+        const double area = face_area(mesh, mesh.faces[i]);
+        if (!(area > 0.0) || light_per_face[i] <= 0.0) continue;
+        const double irradiance = light_per_face[i] / area;
+        light += area * (1.0 + K) * irradiance / (irradiance + K);
+    }
+    return light;
+}
+
+PlantScore plant_score(MeshView mesh, const PlantFitnessParams& params) {
+    check_mesh_view(mesh);
+    PlantScore s;
+    if (mesh.positions.empty()) return s;
+    double zmin = mesh.positions.front().z();
+    for (const Vec3& p : mesh.positions) zmin = std::min(zmin, p.z());
+    s.rooted = zmin <= params.root_height;
+    if (!s.rooted) return s;
+    const Architecture architecture = measure_architecture(mesh, params.architecture);
+    s.tips = architecture.tips;
+    for (const Vec3& tip : architecture.tip_points) s.reproduction += std::max(0.0, tip.z() - zmin);
+    s.moment = bending_moment(mesh, foot_axis(mesh, zmin, params.root_height));
+    s.cost = 1.0 + params.moment_cost * s.moment;
+    // Light is the costly part: skip it when it cannot count.
+    if (s.reproduction > 0.0)
+        s.light = saturating_light(mesh, light_per_face(mesh, params.light), params.half_saturation);
+    s.score = std::sqrt(s.light * s.reproduction) / s.cost;
+    return s;
+}
+
+}  // namespace morphogen

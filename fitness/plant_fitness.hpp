@@ -1,0 +1,48 @@
+#pragma once
+// The `plant` fitness (docs/fitness.md "plant"): Niklas's simulated plant
+// evolution (Niklas 1994, "Morphological evolution through complex domains of
+// fitness", PNAS 91:6772), in which a plant must catch light, hold its
+// reproductive tips high for dispersal, and pay for the mechanics of holding
+// its body up. Scored as Niklas combines the tasks:
+//
+//   plant = sqrt(light · reproduction) / cost
+//   light        = Σ_f area_f · (1 + K) · I_f / (I_f + K)      I_f = light_f / area_f
+//   reproduction = Σ_tips (z_tip − z_min)
+//   cost         = 1 + moment_cost · Σ_f area_f · r_f
+//
+// light_f is what face f catches of the suns (light_per_face, so the plant
+// shades itself); the rectangular hyperbola is a leaf's light response:
+// a face in full sun (I_f ≈ 1) yields its area, and more sun gains nothing
+// more, so spreading the same light over more surface pays (K the relative
+// irradiance at which a face yields half; K → ∞ gives the plain light).
+// Tips are the skeleton's (fitness/architecture.hpp); r_f is the horizontal
+// distance of face f's centroid from the foot's axis, so Σ area·r is the
+// bending moment of a surface of even weight about the foot. A plant whose
+// lowest vertex is above root_height floats, and scores 0.
+#include "fitness/architecture.hpp"
+#include "fitness/light.hpp"
+#include "mesh/mesh.hpp"
+
+namespace morphogen {
+
+struct PlantFitnessParams {
+    LightParams light;            // the `light` keys and defaults
+    double half_saturation = 0.25;  // K, > 0
+    double moment_cost = 0.001;   // per unit of area × lever arm, >= 0
+    double root_height = 0.1;     // the lowest vertex must be at or below this z
+    ArchitectureParams architecture;
+};
+
+struct PlantScore {
+    bool rooted = false;
+    double light = 0, reproduction = 0, moment = 0, cost = 1, score = 0;
+    int tips = 0;
+};
+
+// Thread-safe. Throws what light_per_face and measure_architecture throw.
+PlantScore plant_score(MeshView mesh, const PlantFitnessParams& params);
+
+// The light term alone (the sum over faces above), for tests.
+double saturating_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation);
+
+}  // namespace morphogen
