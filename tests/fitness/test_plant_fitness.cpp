@@ -1,0 +1,124 @@
+// The `plant` fitness (fitness/plant_fitness.hpp, docs/fitness.md "plant"):
+// its light term on meshes whose irradiance is known, its moment, and its
+// config keys. The tips come from fitness/architecture.hpp, tested there.
+#include "fitness/fitness.hpp"
+#include "fitness/light.hpp"
+#include "fitness/plant_fitness.hpp"
+#include "tests/fitness/mesh_builders.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <numeric>
+
+using namespace morphogen;
+using namespace morphogen::test;
+using nlohmann::json;
+
+namespace {
+
+LightParams one_sun(double elevation_deg) {
+    LightParams p;
+    p.elevations_deg = {elevation_deg};
+    p.azimuths_deg = {0.0};
+    return p;
+}
+
+double sum(const std::vector<double>& values) { return std::accumulate(values.begin(), values.end(), 0.0); }
+
+}  // namespace
+
+TEST_CASE("plant fitness: the light per face adds up to the light captured", "[fitness][plant]") {
+    MeshArrays sphere = make_icosphere(3);
+    for (Vec3& p : sphere.positions) p = 3.0 * p + Vec3(0, 0, 3);
+    LightParams p;  // five suns
+    const std::vector<double> per_face = light_per_face(sphere.view(), p);
+    REQUIRE(per_face.size() == sphere.faces.size());
+    CHECK(sum(per_face) == Approx(light_captured(sphere.view(), p)).epsilon(1e-12));
+    // The lower half is in its own shade under the overhead sun.
+    const std::vector<double> overhead = light_per_face(sphere.view(), one_sun(90));
+    for (std::size_t f = 0; f < sphere.faces.size(); ++f) {
+        const Face& face = sphere.faces[f];
+        if (sphere.positions[face[0]].z() < 2.9 && sphere.positions[face[1]].z() < 2.9 &&
+            sphere.positions[face[2]].z() < 2.9)
+            CHECK(overhead[f] == 0.0);
+    }
+}
+
+TEST_CASE("plant fitness: a face's yield saturates with its light", "[fitness][plant]") {
+    const MeshArrays square = make_square(0, 0, 10, 10, 0);
+    // Square to an overhead sun: I = 1, so every face yields its area, whatever K.
+    const std::vector<double> overhead = light_per_face(square.view(), one_sun(90));
+    CHECK(sum(overhead) == Approx(100.0));
+    for (double K : {0.1, 0.25, 4.0}) CHECK(saturating_light(square.view(), overhead, K) == Approx(100.0));
+    // A sun 30 degrees up: I = sin 30 = 1/2, so the yield is (1 + K) / (1 + 2K) of the area.
+    const std::vector<double> low = light_per_face(square.view(), one_sun(30));
+    CHECK(sum(low) == Approx(50.0).epsilon(0.01));
+    CHECK(saturating_light(square.view(), low, 0.25) == Approx(100.0 * 1.25 / 1.5).epsilon(0.01));
+    // As K grows the yield becomes the plain light.
+    CHECK(saturating_light(square.view(), low, 1e9) == Approx(sum(low)).epsilon(1e-6));
+    // Spreading the same light over twice the area yields more: two squares at half the light each.
+    CHECK(saturating_light(square.view(), low, 0.25) > sum(low));
+}
+
+TEST_CASE("plant fitness: the score is its terms combined, and a plant must stand", "[fitness][plant]") {
+    MeshArrays sphere = make_icosphere(3);
+    for (Vec3& p : sphere.positions) p = 2.0 * p + Vec3(5, -3, 2);  // resting on z = 0
+    PlantFitnessParams params;
+    params.light = one_sun(90);
+    const PlantScore s = plant_score(sphere.view(), params);
+    REQUIRE(s.rooted);
+    REQUIRE(s.tips >= 1);
+    CHECK(s.reproduction > 0.0);
+    CHECK(s.light > 0.0);
+    CHECK(s.cost == Approx(1.0 + params.moment_cost * s.moment));
+    CHECK(s.score == Approx(std::sqrt(s.light * s.reproduction) / s.cost));
+    // The moment is about the foot: moving the plant changes nothing.
+    MeshArrays moved = sphere;
+    for (Vec3& p : moved.positions) p += Vec3(-40, 7, 0);
+    CHECK(plant_score(moved.view(), params).moment == Approx(s.moment).epsilon(1e-9));
+    // A plant that floats scores 0.
+    for (Vec3& p : moved.positions) p.z() += 0.5;
+    const PlantScore floating = plant_score(moved.view(), params);
+    CHECK_FALSE(floating.rooted);
+    CHECK(floating.score == 0.0);
+}
+
+TEST_CASE("plant fitness: weight held away from the foot costs more", "[fitness][plant]") {
+    // A post with a box on top, once centred and once held 6 units out on one side.
+    const MeshArrays post = make_box({-0.5, -0.5, 0}, {0.5, 0.5, 8});
+    const MeshArrays centred = merge(post, make_box({-1, -1, 8}, {1, 1, 10}));
+    const MeshArrays aside = merge(post, make_box({5, -1, 8}, {7, 1, 10}));
+    PlantFitnessParams params;
+    params.light = one_sun(90);
+    const double centred_moment = plant_score(centred.view(), params).moment;
+    const double aside_moment = plant_score(aside.view(), params).moment;
+    // The box's 24 units of area move 6 units out: 144 more, up to the faces'
+    // spread about their centroids.
+    CHECK(aside_moment > centred_moment + 100.0);
+}
+
+TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][config]") {
+    ConfigIssues issues;
+    const json section = json::parse(R"({"type": "plant", "spacing": 0.25})");
+    ObjectReader reader(&section, "fitness", issues);
+    const std::unique_ptr<Fitness> fitness = read_fitness(reader);
+    REQUIRE(issues.empty());
+    REQUIRE(fitness);
+    CHECK(fitness->function().type() == "plant");
+    const json& resolved = reader.resolved();
+    CHECK(resolved["half_saturation"] == 0.25);
+    CHECK(resolved["moment_cost"] == 0.001);
+    CHECK(resolved["root_height"] == 0.1);
+    CHECK(resolved["spacing"] == 0.25);
+
+    const auto first_issue = [](const char* text) {
+        ConfigIssues found;
+        const json bad = json::parse(text);
+        ObjectReader r(&bad, "fitness", found);
+        CHECK_FALSE(read_fitness(r));
+        return found.empty() ? std::string() : found.list().front().path + ": " + found.list().front().message;
+    };
+    CHECK(first_issue(R"({"type": "plant", "half_saturation": 0})").starts_with("fitness.half_saturation"));
+    CHECK(first_issue(R"({"type": "plant", "moment_cost": -1})").starts_with("fitness.moment_cost"));
+    CHECK(first_issue(R"({"type": "plant", "trunk_target": 0.2})").starts_with("fitness.trunk_target: unknown key"));
+}
