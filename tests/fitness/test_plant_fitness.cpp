@@ -56,7 +56,7 @@ TEST_CASE("plant fitness: a face's yield saturates with its light", "[fitness][p
     CHECK(saturating_light(square.view(), low, 0.25) == Approx(100.0 * 1.25 / 1.5).epsilon(0.01));
     // As K grows the yield becomes the plain light.
     CHECK(saturating_light(square.view(), low, 1e9) == Approx(sum(low)).epsilon(1e-6));
-    // Spreading the same light over twice the area yields more: two squares at half the light each.
+    // A half-lit face yields more than the light it catches: spreading light pays.
     CHECK(saturating_light(square.view(), low, 0.25) > sum(low));
 }
 
