@@ -4,6 +4,7 @@
 #include "app/resource_options.hpp"
 #include "base/config_reader.hpp"
 #include "base/errors.hpp"
+#include "fitness/architecture_json.hpp"
 #include "fitness/fitness.hpp"
 #include "growth/genome_grower.hpp"
 #include "io/mesh_io.hpp"
@@ -70,8 +71,10 @@ int run_score(const ScoreOptions& options) {
     const FitnessOutcome outcome = config.fitness->evaluate(mesh.view());
     const nlohmann::json& fitness_section = config.resolved["fitness"];
     nlohmann::json metrics;
+    nlohmann::json architecture;
     try {
         metrics = mesh_metrics(mesh.view(), canopy_params_of(fitness_section));
+        architecture = architecture_json(measure_architecture(mesh.view()));
     } catch (const std::logic_error& e) {  // what the measures refuse (e.g. a canopy grid too large)
         throw MeshError(source + ": " + e.what());
     }
@@ -84,6 +87,7 @@ int run_score(const ScoreOptions& options) {
         report["fitness"] = outcome.valid ? nlohmann::json(outcome.score) : nlohmann::json();  // null if invalid
         if (!outcome.valid) report["fitness_error"] = outcome.error;
         report.update(metrics);
+        report["architecture"] = architecture;
         std::printf("%s\n", report.dump(2).c_str());
         return 0;
     }
@@ -94,6 +98,10 @@ int run_score(const ScoreOptions& options) {
         std::printf("  %-18s invalid (%s): %s\n", "fitness", type.c_str(), outcome.error.c_str());
     for (const char* key : {"canopy", "height", "footprint", "area", "volume", "vertices", "faces", "self_intersecting"})
         std::printf("  %-18s %s\n", key, number_text(metrics.at(key)).c_str());
+    std::printf("  %-18s tips %s, limbs %s, first fork at %s, Strahler %s, solidity %s\n", "architecture",
+                number_text(architecture["tips"]).c_str(), number_text(architecture["limbs"]).c_str(),
+                number_text(architecture["first_fork_height"]).c_str(), number_text(architecture["strahler"]).c_str(),
+                architecture["solidity"].is_null() ? "none (open mesh)" : number_text(architecture["solidity"]).c_str());
     return 0;
 }
 

@@ -1,6 +1,7 @@
 #include "fitness/descriptors.hpp"
 
 #include "base/config_reader.hpp"
+#include "fitness/architecture.hpp"
 #include "fitness/measures.hpp"
 #include "fitness/tree_sections.hpp"
 
@@ -58,6 +59,16 @@ const DescriptorMeasure kMeasures[] = {
      "widest section of the lowest quarter / widest of the upper half (a tree: <= 0.25)"},
     {"upper_loops", [](MeshView m, const CanopyParams&) { return static_cast<double>(tree_sections(m).upper_loops); },
      "most loops of a horizontal section in the upper half (branches: >= 3)"},
+    {"tips", [](MeshView m, const CanopyParams&) { return static_cast<double>(measure_architecture(m).tips); },
+     "end nodes of the level-set skeleton, noise pruned"},
+    {"limbs", [](MeshView m, const CanopyParams&) { return static_cast<double>(measure_architecture(m).limbs.size()); },
+     "skeleton branches above a fork at least 3 times as long as thick"},
+    {"first_fork_height", [](MeshView m, const CanopyParams&) { return measure_architecture(m).first_fork_height; },
+     "height of the skeleton's lowest fork above the lowest vertex (the plant's height if none)"},
+    {"strahler", [](MeshView m, const CanopyParams&) { return static_cast<double>(measure_architecture(m).strahler); },
+     "Strahler order of the skeleton (1: no branching)"},
+    {"solidity", [](MeshView m, const CanopyParams&) { return mesh_solidity(m); },
+     "volume / convex-hull volume (NaN for an open mesh)"},
 };
 }  // namespace
 

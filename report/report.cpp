@@ -3,6 +3,7 @@
 #include "base/atomic_file.hpp"
 #include "base/config_reader.hpp"
 #include "base/errors.hpp"
+#include "fitness/architecture_json.hpp"
 #include "growth/genome_grower.hpp"
 #include "io/mesh_io.hpp"
 #include "report/render.hpp"
@@ -372,11 +373,13 @@ void best_json(Reporter& r, const RunInputs& in, Pictures& pictures, LazyGrowth&
               {"parent1", optional_id(best->parent1)},
               {"parent2", optional_id(best->parent2)},
               {"vertices", best->size},
-              {"script", nullptr}};
+              {"script", nullptr},
+              {"architecture", nullptr}};
     if (const GenomeGrower* p = growth()) {
         const GrowthState grown = p->grow(best->params);
         write_out(r.out / "best.js", mesh_script("best", encode_mesh(grown.mesh.view(), MeshFormat::glb)));
         b["script"] = "best.js";
+        b["architecture"] = architecture_json(measure_architecture(grown.mesh.view()));
     }
     d["best"] = std::move(b);
     if (best->id < in.lineage.size()) {

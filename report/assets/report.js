@@ -45,6 +45,13 @@
     var runName = R.name || 'run';
     document.title = runName + ' — morphogen report';
     $('title').textContent = runName;
+    // The best's skeleton measures (docs/fitness.md "Architecture measures") in one line.
+    function architectureText(a) {
+      var limbs = a.limb_lengths.map(function (l, i) { return fmt(l, 3) + '/' + fmt(a.limb_thicknesses[i], 3); });
+      return a.tips + ' tips, ' + a.limbs + ' limbs' + (limbs.length ? ' (length/thickness ' + limbs.join(', ') + ')' : '') +
+        ', first fork at ' + fmt(a.first_fork_height, 3) + ', Strahler ' + a.strahler +
+        ', solidity ' + (a.solidity === null ? 'none (open mesh)' : fmt(a.solidity, 3));
+    }
     var complete = R.generations !== null && R.generations >= R.target_generations;
     $('subtitle').textContent = (R.algorithm === 'map_elites' ? 'MAP-Elites' : 'steady-state GA') + ' · ' +
       R.run_dir + (complete ? '' : ' · in progress or stopped');
@@ -63,7 +70,8 @@
       ['best fitness', best ? fmt(best.fitness, 6) : 'no valid individual yet'],
       ['best individual', best ? 'id ' + best.id + ', born in generation ' + best.generation + ', ' +
         fmt(best.vertices) + ' vertices, parents ' + (best.parent1 === null ? 'none (initial population)' :
-        best.parent1 + (best.parent2 === null ? '' : ' × ' + best.parent2)) : '–']
+        best.parent1 + (best.parent2 === null ? '' : ' × ' + best.parent2)) : '–'],
+      ['best architecture', best && best.architecture ? architectureText(best.architecture) : '–']
     ];
     var table = $('glance-table');
     rows.forEach(function (r) {

@@ -49,7 +49,7 @@ TEST_CASE("score --mesh prints the fitness and every metric", "[fitness][cli]") 
     INFO(text.out);
     CHECK(text.code == 0);
     for (const char* word : {"fitness", "canopy", "height", "footprint", "area", "volume", "vertices", "faces",
-                             "self_intersecting"})
+                             "self_intersecting", "architecture", "Strahler", "solidity"})
         CHECK(text.out.find(word) != std::string::npos);
 
     const Result js = morphogen_run("score --mesh " + box + " --json");
@@ -64,6 +64,17 @@ TEST_CASE("score --mesh prints the fitness and every metric", "[fitness][cli]") 
     CHECK(report["vertices"] == 8);
     CHECK(report["faces"] == 12);
     CHECK(report["self_intersecting"] == false);
+    // A box is one unbranched axis, its own convex hull.
+    const json& architecture = report["architecture"];
+    CHECK(architecture["tips"] == 1);
+    CHECK(architecture["limbs"] == 0);
+    CHECK(architecture["limb_lengths"] == json::array());
+    CHECK(architecture["limb_thicknesses"] == json::array());
+    CHECK(architecture["forks"] == 0);
+    CHECK(architecture["strahler"] == 1);
+    CHECK(architecture["first_fork_height"].get<double>() == Approx(11.0));
+    CHECK(architecture["solidity"].get<double>() == Approx(1.0));
+    CHECK(architecture["band_width"].get<double>() > 0);
 
     // --fitness replaces the config's section; canopy metrics follow its height.
     const Result height = morphogen_run("score --mesh " + box +
@@ -92,6 +103,14 @@ TEST_CASE("score --mesh prints the fitness and every metric", "[fitness][cli]") 
     CHECK(r["fitness"].is_null());
     CHECK(r["fitness_valid"] == false);
     CHECK(r["self_intersecting"] == true);
+
+    // An open mesh has no solidity: null in JSON, said in words in text.
+    const std::string open = (dir / "open.obj").string();
+    write_mesh(test::make_square(0, 0, 1, 1, 0).view(), open);
+    const Result open_json = morphogen_run("score --json --mesh " + open);
+    REQUIRE(open_json.code == 0);
+    CHECK(json::parse(open_json.out)["architecture"]["solidity"].is_null());
+    CHECK(morphogen_run("score --mesh " + open).out.find("solidity none (open mesh)") != std::string::npos);
     std::filesystem::remove_all(dir);
 }
 

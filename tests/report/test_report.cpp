@@ -160,6 +160,12 @@ TEST_CASE("a run with no exported meshes still reports: plots, ancestry, the bes
     CHECK(d["meshes"].empty());
     CHECK(d["sheet"].is_null());
     CHECK(d["best"]["script"] == "best.js");
+    // The best grown: its architecture measures for the summary.
+    const nlohmann::json& architecture = d["best"]["architecture"];
+    CHECK(architecture["tips"].get<int>() >= 0);
+    CHECK(architecture["strahler"].get<int>() >= 1);
+    CHECK(architecture["limbs"] == architecture["limb_lengths"].size());
+    CHECK(architecture["first_fork_height"].get<double>() >= 0);
     CHECK_FALSE(d["ancestry"].empty());
     for (const auto& a : d["ancestry"]) CHECK(a["thumb"].is_null());
     CHECK(fs::is_regular_file(run / "report/best.js"));

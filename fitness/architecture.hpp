@@ -1,0 +1,66 @@
+#pragma once
+// Measures of a plant's architecture from its level-set skeleton
+// (fitness/skeleton.hpp; docs/fitness.md "Architecture measures"): they tell
+// a branching tree from a stalk under one crown.
+//
+// - A branch is the skeleton path from a fork (a node with 2+ children) to
+//   the next fork or an end node; its length = the sum of the distances
+//   between consecutive node centroids (the fork's included), its thickness =
+//   the median diameter of its nodes after the fork (the end fork left out
+//   when there are others); its tube length = the area of those nodes /
+//   (pi x thickness), the length of a tube of that area and thickness. The
+//   rules below use its reach = the smaller of the two: a sliver that
+//   Dijkstra's metric leaves as a local maximum of distance (a few triangles
+//   at the rim of a ring) lies a ring's radius away from the ring's centroid
+//   but has almost no area.
+// - Pruning: a branch to an end node whose reach is below tip_slenderness x
+//   its thickness is noise (a bump, a lobe), not a tip: it is removed, and
+//   removal repeats until every end branch stands (a fork left with one
+//   child is a fork no more).
+// - tips: the end nodes other than the root; limbs: the branches with
+//   reach >= limb_slenderness x thickness; first_fork_height: the lowest
+//   fork's centroid z - zmin, or the plant's height (zmax - zmin) when the
+//   skeleton never forks; strahler: a leaf is 1, a node the max of its
+//   children's, +1 when two or more share that max; solidity: |volume| /
+//   convex-hull volume, NaN for an open mesh (an edge used more often in
+//   one direction than in the other, after the welding of skeleton.hpp) or
+//   a hull of no volume.
+#include "fitness/skeleton.hpp"
+#include "mesh/mesh.hpp"
+
+#include <vector>
+
+namespace morphogen {
+
+struct ArchitectureParams {
+    SkeletonParams skeleton = {};   // band width and base rules
+    double limb_slenderness = 3.0;  // a limb is at least this many thicknesses long
+    double tip_slenderness = 1.0;   // an end branch shorter than this many thicknesses is pruned
+};
+
+struct Limb {
+    double length = 0, thickness = 0;
+    double tube_length = 0;  // area / (pi thickness)
+    Vec3 base = Vec3::Zero(), tip = Vec3::Zero();  // centroids of its first (fork) and last node
+};
+
+struct Architecture {
+    std::vector<Vec3> tip_points;  // position of each tip (the centroid of its skeleton end node)
+    int tips = 0;
+    std::vector<Limb> limbs;  // the branches that count as limbs, in skeleton order
+    double first_fork_height = 0;
+    int strahler = 0;
+    double solidity = 0;  // NaN for an open mesh or a flat hull
+    int forks = 0;        // nodes with 2+ children after pruning
+    int nodes = 0;        // skeleton nodes after pruning
+    double band_width = 0;
+};
+
+// Thread-safe; throws std::invalid_argument for a malformed mesh
+// (check_mesh_view), no vertices, or a non-positive slenderness.
+Architecture measure_architecture(MeshView mesh, const ArchitectureParams& params = {});
+
+// |volume| / convex-hull volume (the definition above); NaN when open or flat.
+double mesh_solidity(MeshView mesh);
+
+}  // namespace morphogen

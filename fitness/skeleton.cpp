@@ -1,0 +1,363 @@
+#include "fitness/skeleton.hpp"
+
+#include "fitness/measures.hpp"
+#include "fitness/welded_mesh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <numbers>
+#include <numeric>
+#include <queue>
+#include <stdexcept>
+#include <utility>
+#include <vector>
+
+namespace morphogen {
+
+namespace {
+
+constexpr double kUnreached = std::numeric_limits<double>::infinity();
+
+class UnionFind {
+public:
+    explicit UnionFind(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), 0); }
+    int find(int a) {
+        while (parent_[a] != a) a = parent_[a] = parent_[parent_[a]];
+        return a;
+    }
+    // The smaller index becomes the root, so the result does not depend on the order of joins.
+    void join(int a, int b) {
+        a = find(a), b = find(b);
+        if (a != b) parent_[std::max(a, b)] = std::min(a, b);
+    }
+
+private:
+    std::vector<int> parent_;
+};
+
+// Each undirected edge once, with the triangles on it.
+struct EdgeFaces {
+    int a, b;           // a < b
+    int first, count;   // into Edges::faces
+};
+struct Edges {
+    std::vector<EdgeFaces> edges;
+    std::vector<int> faces;
+};
+
+Edges edges_of(const MeshArrays& mesh) {
+    std::vector<std::array<int, 3>> sides;  // (a, b, face), a < b
+    sides.reserve(mesh.faces.size() * 3);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+        for (int k = 0; k < 3; ++k) {
+            const int u = mesh.faces[f][k], v = mesh.faces[f][(k + 1) % 3];
+            sides.push_back({std::min(u, v), std::max(u, v), static_cast<int>(f)});
+        }
+    std::sort(sides.begin(), sides.end());
+    Edges out;
+    out.faces.reserve(sides.size());
+    for (std::size_t i = 0; i < sides.size(); ++i) {
+        if (i == 0 || sides[i][0] != sides[i - 1][0] || sides[i][1] != sides[i - 1][1])
+            out.edges.push_back({sides[i][0], sides[i][1], static_cast<int>(out.faces.size()), 0});
+        out.faces.push_back(sides[i][2]);
+        ++out.edges.back().count;
+    }
+    return out;
+}
+
+double median_edge_length(const MeshArrays& mesh, const Edges& edges) {
+    std::vector<double> lengths;
+    lengths.reserve(edges.edges.size());
+    for (const EdgeFaces& e : edges.edges) lengths.push_back((mesh.positions[e.a] - mesh.positions[e.b]).norm());
+    if (lengths.empty()) return 0.0;
+    auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+    std::nth_element(lengths.begin(), middle, lengths.end());
+    return *middle;
+}
+
+// Dijkstra over the edges from every vertex with z <= base_z.
+std::vector<double> base_distances(const MeshArrays& mesh, const Edges& edges, double base_z) {
+    const std::size_t n = mesh.positions.size();
+    std::vector<int> start(n + 1, 0), next(edges.edges.size() * 2);
+    for (const EdgeFaces& e : edges.edges) ++start[e.a + 1], ++start[e.b + 1];
+    std::partial_sum(start.begin(), start.end(), start.begin());
+    std::vector<int> fill(start.begin(), start.end() - 1);
+    for (const EdgeFaces& e : edges.edges) next[fill[e.a]++] = e.b, next[fill[e.b]++] = e.a;
+
+    std::vector<double> d(n, kUnreached);
+    using Entry = std::pair<double, int>;
+    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
+    for (std::size_t v = 0; v < n; ++v)
+        if (mesh.positions[v].z() <= base_z) d[v] = 0.0, queue.emplace(0.0, static_cast<int>(v));
+    while (!queue.empty()) {
+        const auto [dv, v] = queue.top();
+        queue.pop();
+        if (dv > d[v]) continue;
+        for (int i = start[v]; i < start[v + 1]; ++i) {
+            const int u = next[i];
+            const double du = dv + (mesh.positions[u] - mesh.positions[v]).norm();
+            if (du < d[u]) d[u] = du, queue.emplace(du, u);
+        }
+    }
+    return d;
+}
+
+// The bands [k, k+1) of t = d / w a triangle covers with positive length:
+// floor(t_min) .. ceil(t_max) - 1 (at least the first).
+std::pair<int, int> band_range(double t0, double t1, double t2) {
+    const double lo = std::min({t0, t1, t2}), hi = std::max({t0, t1, t2});
+    const int first = static_cast<int>(std::floor(lo));
+    return {first, std::max(first, static_cast<int>(std::ceil(hi)) - 1)};
+}
+
+struct Corner {
+    Vec3 p;
+    double t;
+};
+
+// The part of a triangle with t in [lo, hi] (Sutherland-Hodgman on t).
+std::vector<Corner> clip(std::vector<Corner> polygon, double lo, double hi) {
+    for (const double sign : {1.0, -1.0}) {
+        const double bound = sign > 0 ? lo : hi;  // keep sign * (t - bound) >= 0
+        std::vector<Corner> kept;
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const Corner& a = polygon[i];
+            const Corner& b = polygon[(i + 1) % polygon.size()];
+            const double sa = sign * (a.t - bound), sb = sign * (b.t - bound);
+            if (sa >= 0) kept.push_back(a);
+            if ((sa < 0 && sb > 0) || (sa > 0 && sb < 0)) {
+                const double s = sa / (sa - sb);
+                kept.push_back({a.p + s * (b.p - a.p), bound});
+            }
+        }
+        polygon = std::move(kept);
+    }
+    return polygon;
+}
+
+// What a clipped triangle adds to its node.
+struct Piece {
+    double area = 0.0;
+    Vec3 moment = Vec3::Zero();  // sum of area x centroid
+    double level_length = 0.0;   // sum of area x |grad d|: the integral of the level curves' length over d
+    double t_lo = kUnreached, t_hi = -kUnreached;
+    void add(const Piece& o) {
+        area += o.area, moment += o.moment, level_length += o.level_length;
+        t_lo = std::min(t_lo, o.t_lo), t_hi = std::max(t_hi, o.t_hi);
+    }
+};
+
+// |grad d| of d linear over the triangle (a, b, c); 0 for a degenerate one.
+double gradient_norm(const Vec3& a, const Vec3& b, const Vec3& c, double da, double db, double dc) {
+    const Vec3 e1 = b - a, e2 = c - a, n = e1.cross(e2);
+    const double n2 = n.squaredNorm();
+    if (n2 <= 0.0) return 0.0;
+    return ((db - da) * e2.cross(n) + (dc - da) * n.cross(e1)).norm() / n2;
+}
+
+Piece piece_of(const std::vector<Corner>& polygon, double grad) {
+    Piece piece;
+    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+        const double a = 0.5 * (polygon[i].p - polygon[0].p).cross(polygon[i + 1].p - polygon[0].p).norm();
+        piece.area += a;
+        piece.moment += a * (polygon[0].p + polygon[i].p + polygon[i + 1].p) / 3.0;
+    }
+    piece.level_length = piece.area * grad;
+    for (const Corner& c : polygon) piece.t_lo = std::min(piece.t_lo, c.t), piece.t_hi = std::max(piece.t_hi, c.t);
+    return piece;
+}
+
+// Every (triangle, band) pair the triangle covers, with its clipped piece.
+struct Fragments {
+    std::vector<int> first, band_lo, band_hi;  // per triangle; first = -1 when unreached
+    std::vector<int> band;                     // per fragment
+    std::vector<Piece> pieces;                 // per fragment
+    // The fragment of triangle f in band k, or -1.
+    int of(int f, int k) const {
+        if (first[f] < 0 || k < band_lo[f] || k > band_hi[f]) return -1;
+        return first[f] + k - band_lo[f];
+    }
+};
+
+Fragments clip_into_bands(const MeshArrays& mesh, const std::vector<double>& d, double w) {
+    Fragments out;
+    const std::size_t faces = mesh.faces.size();
+    out.first.assign(faces, -1), out.band_lo.assign(faces, 0), out.band_hi.assign(faces, -1);
+    for (std::size_t f = 0; f < faces; ++f) {
+        const Face& g = mesh.faces[f];
+        if (d[g[0]] == kUnreached) continue;  // the whole triangle is (its edges join its corners)
+        const Vec3 &a = mesh.positions[g[0]], &b = mesh.positions[g[1]], &c = mesh.positions[g[2]];
+        const std::vector<Corner> triangle = {{a, d[g[0]] / w}, {b, d[g[1]] / w}, {c, d[g[2]] / w}};
+        const auto [lo, hi] = band_range(triangle[0].t, triangle[1].t, triangle[2].t);
+        const double grad = gradient_norm(a, b, c, d[g[0]], d[g[1]], d[g[2]]);
+        out.first[f] = static_cast<int>(out.band.size()), out.band_lo[f] = lo, out.band_hi[f] = hi;
+        for (int k = lo; k <= hi; ++k) {
+            out.band.push_back(k);
+            out.pieces.push_back(piece_of(clip(triangle, k, k + 1.0), grad));
+        }
+    }
+    return out;
+}
+
+// The bands whose closed interval [k, k+1] holds t: two when t is an integer.
+int lowest_band_holding(double t) { return static_cast<int>(std::ceil(t)) - 1; }
+int highest_band_holding(double t) { return static_cast<int>(std::floor(t)); }
+
+// Joins the fragments of one band that touch, and lists the touching
+// fragments of consecutive bands as (lower, upper) pairs.
+std::vector<std::pair<int, int>> join_fragments(UnionFind& pieces, const Fragments& fragments, const MeshArrays& mesh,
+                                                const Edges& edges, const std::vector<double>& t) {
+    std::vector<std::pair<int, int>> contacts;
+    // Triangles across an edge, in every band the edge reaches.
+    for (const EdgeFaces& e : edges.edges) {
+        if (e.count < 2 || t[e.a] == kUnreached) continue;
+        const int k_hi = highest_band_holding(std::max(t[e.a], t[e.b]));
+        for (int k = lowest_band_holding(std::min(t[e.a], t[e.b])); k <= k_hi; ++k) {
+            int anchor = -1;
+            for (int i = e.first; i < e.first + e.count; ++i) {
+                const int fragment = fragments.of(edges.faces[i], k);
+                if (fragment < 0) continue;
+                if (anchor < 0) anchor = fragment;
+                else pieces.join(anchor, fragment);
+            }
+        }
+    }
+    // Triangles around a vertex, in the one or two bands holding it; a vertex
+    // on a band boundary makes the pieces on either side touch.
+    std::vector<std::array<int, 2>> anchor(mesh.positions.size(), {-1, -1});  // lower band, upper band
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
+        if (fragments.first[f] < 0) continue;
+        for (int v : mesh.faces[f]) {
+            const int k_hi = highest_band_holding(t[v]);
+            for (int k = lowest_band_holding(t[v]); k <= k_hi; ++k) {
+                const int fragment = fragments.of(static_cast<int>(f), k);
+                if (fragment < 0) continue;
+                int& a = anchor[v][k == k_hi ? 1 : 0];
+                if (a < 0) a = fragment;
+                else pieces.join(a, fragment);
+            }
+        }
+    }
+    for (const auto& [lower, upper] : anchor)
+        if (lower >= 0 && upper >= 0) contacts.emplace_back(lower, upper);
+    // A triangle crossing a boundary touches both sides.
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+        for (int k = fragments.band_lo[f]; k < fragments.band_hi[f]; ++k)
+            contacts.emplace_back(fragments.of(static_cast<int>(f), k), fragments.of(static_cast<int>(f), k + 1));
+    // All of band 0 is the root.
+    int base = -1;
+    for (std::size_t i = 0; i < fragments.band.size(); ++i) {
+        if (fragments.band[i] != 0) continue;
+        if (base < 0) base = static_cast<int>(i);
+        else pieces.join(base, static_cast<int>(i));
+    }
+    return contacts;
+}
+
+// One node per joined piece (the root first, then by band and first
+// fragment), each with the parent it touches most in the band below.
+Skeleton nodes_of(UnionFind& pieces, const Fragments& fragments, const std::vector<std::pair<int, int>>& contacts,
+                  double w) {
+    const int count = static_cast<int>(fragments.band.size());
+    std::vector<int> roots;
+    for (int i = 0; i < count; ++i)
+        if (pieces.find(i) == i) roots.push_back(i);
+    std::stable_sort(roots.begin(), roots.end(),
+                     [&](int a, int b) { return fragments.band[a] < fragments.band[b]; });
+    std::vector<int> node_of_root(count, -1);
+    for (std::size_t n = 0; n < roots.size(); ++n) node_of_root[roots[n]] = static_cast<int>(n);
+
+    std::vector<Piece> sums(roots.size());
+    for (int i = 0; i < count; ++i) sums[node_of_root[pieces.find(i)]].add(fragments.pieces[i]);
+    Skeleton skeleton;
+    skeleton.band_width = w;
+    skeleton.nodes.resize(roots.size());
+    for (std::size_t n = 0; n < roots.size(); ++n) {
+        SkeletonNode& node = skeleton.nodes[n];
+        const Piece& s = sums[n];
+        node.band = fragments.band[roots[n]];
+        node.area = s.area;
+        node.centroid = s.area > 0 ? Vec3(s.moment / s.area) : Vec3::Zero();
+        const double span = (s.t_hi - s.t_lo) * w;
+        node.diameter = span > 0 ? s.level_length / (std::numbers::pi * span) : 0.0;
+    }
+
+    std::vector<std::array<int, 2>> links;  // (upper node, lower node), once per contact
+    for (const auto& [lower, upper] : contacts) {
+        const int a = node_of_root[pieces.find(upper)], b = node_of_root[pieces.find(lower)];
+        if (skeleton.nodes[a].band == skeleton.nodes[b].band + 1) links.push_back({a, b});
+    }
+    std::sort(links.begin(), links.end());
+    for (std::size_t i = 0; i < links.size();) {  // per upper node, the lower node of the longest run
+        std::size_t j = i, best_count = 0;
+        int best = -1;
+        while (j < links.size() && links[j][0] == links[i][0]) {
+            std::size_t run = j;
+            while (run < links.size() && links[run] == links[j]) ++run;
+            if (run - j > best_count) best_count = run - j, best = links[j][1];
+            j = run;
+        }
+        skeleton.nodes[links[i][0]].parent = best;
+        i = j;
+    }
+    // Every node above band 0 touches the band below (each vertex but the
+    // base's has a nearer neighbour); a rounding tie that breaks this joins the root.
+    for (std::size_t n = 1; n < skeleton.nodes.size(); ++n) {
+        SkeletonNode& node = skeleton.nodes[n];
+        if (node.parent < 0) node.parent = 0;
+        skeleton.nodes[node.parent].children.push_back(static_cast<int>(n));
+    }
+    return skeleton;
+}
+
+// A mesh with nothing to cut into bands: its root at the lowest vertex.
+Skeleton lone_root(MeshView mesh) {
+    const auto lowest = std::min_element(mesh.positions.begin(), mesh.positions.end(),
+                                         [](const Vec3& a, const Vec3& b) { return a.z() < b.z(); });
+    Skeleton skeleton;
+    skeleton.nodes.emplace_back().centroid = *lowest;
+    double zmax = lowest->z();
+    for (const Vec3& p : mesh.positions) zmax = std::max(zmax, p.z());
+    skeleton.zmin = lowest->z(), skeleton.zmax = zmax;
+    return skeleton;
+}
+
+}  // namespace
+
+Skeleton level_set_skeleton(MeshView mesh, const SkeletonParams& params) {
+    check_mesh_view(mesh);
+    if (mesh.positions.empty()) throw std::invalid_argument("a mesh without vertices has no skeleton");
+    if (!(params.band_edges > 0) || !std::isfinite(params.band_edges))
+        throw std::invalid_argument("skeleton band_edges must be positive and finite");
+    if (params.max_bands < 1) throw std::invalid_argument("skeleton max_bands must be at least 1");
+    if (!std::isfinite(params.band_width) || !std::isfinite(params.base_height))
+        throw std::invalid_argument("skeleton band_width and base_height must be finite");
+
+    const MeshArrays welded = welded_mesh(mesh);
+    if (welded.faces.empty()) return lone_root(mesh);
+    const Edges edges = edges_of(welded);
+    double zmin = welded.positions[0].z(), zmax = zmin;
+    for (const Vec3& p : welded.positions) zmin = std::min(zmin, p.z()), zmax = std::max(zmax, p.z());
+
+    double w = params.band_width > 0 ? params.band_width : params.band_edges * median_edge_length(welded, edges);
+    const double base_height = params.base_height >= 0 ? params.base_height : 0.5 * w;
+    std::vector<double> d = base_distances(welded, edges, zmin + base_height);
+    double reach = 0.0;
+    for (double x : d)
+        if (x != kUnreached) reach = std::max(reach, x);
+    w = std::max(w, reach / params.max_bands);
+    if (!(w > 0)) return lone_root(mesh);
+
+    std::vector<double> t(d.size());
+    for (std::size_t v = 0; v < d.size(); ++v) t[v] = d[v] == kUnreached ? kUnreached : d[v] / w;
+    const Fragments fragments = clip_into_bands(welded, d, w);
+    UnionFind pieces(fragments.band.size());
+    const auto contacts = join_fragments(pieces, fragments, welded, edges, t);
+    Skeleton skeleton = nodes_of(pieces, fragments, contacts, w);
+    skeleton.base_height = base_height, skeleton.zmin = zmin, skeleton.zmax = zmax;
+    return skeleton;
+}
+
+}  // namespace morphogen
