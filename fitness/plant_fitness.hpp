@@ -28,7 +28,7 @@ namespace morphogen {
 struct PlantFitnessParams {
     LightParams light;            // the `light` keys and defaults
     double half_saturation = 0.25;  // K, > 0
-    double moment_cost = 0.001;   // per unit of area × lever arm, >= 0
+    double moment_cost = 0.0002;   // per unit of area × lever arm, >= 0
     double root_height = 0.1;     // the lowest vertex must be at or below this z
     ArchitectureParams architecture;
 };

@@ -108,7 +108,7 @@ TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][c
     CHECK(fitness->function().type() == "plant");
     const json& resolved = reader.resolved();
     CHECK(resolved["half_saturation"] == 0.25);
-    CHECK(resolved["moment_cost"] == 0.001);
+    CHECK(resolved["moment_cost"] == 0.0002);
     CHECK(resolved["root_height"] == 0.1);
     CHECK(resolved["spacing"] == 0.25);
 
