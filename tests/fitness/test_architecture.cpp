@@ -155,6 +155,7 @@ TEST_CASE("architecture: a Y forks once into two limbs", "[fitness][architecture
     const Architecture strict = measure_architecture(mesh.view(), {.tip_slenderness = 6});
     CHECK(strict.tips == 1);
     CHECK(strict.strahler == 1);
+    CHECK(std::isnan(measure_architecture(mesh.view(), {.with_solidity = false}).solidity));
 }
 
 TEST_CASE("architecture: candelabras of 3 and 5 arms have 3 and 5 limbs", "[fitness][architecture]") {
