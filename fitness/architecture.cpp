@@ -190,7 +190,7 @@ Architecture measure_architecture(MeshView mesh, const ArchitectureParams& param
                                  .base = tree.node(b.fork).centroid,
                                  .tip = tree.node(b.nodes.back()).centroid});
     out.strahler = strahler_order(tree);
-    out.solidity = mesh_solidity(mesh);
+    out.solidity = params.with_solidity ? mesh_solidity(mesh) : std::numeric_limits<double>::quiet_NaN();
     return out;
 }
 

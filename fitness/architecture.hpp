@@ -36,6 +36,7 @@ struct ArchitectureParams {
     SkeletonParams skeleton = {};   // band width and base rules
     double limb_slenderness = 3.0;  // a limb is at least this many thicknesses long
     double tip_slenderness = 1.0;   // an end branch shorter than this many thicknesses is pruned
+    bool with_solidity = true;      // false leaves solidity NaN and skips the convex hull
 };
 
 struct Limb {

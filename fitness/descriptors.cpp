@@ -32,6 +32,9 @@ void require_vertices(MeshView mesh) {
     if (mesh.positions.empty()) throw std::invalid_argument("a mesh without vertices has no shape measures");
 }
 
+// The skeleton's measures without the convex hull (solidity has its own row).
+Architecture skeleton_measures(MeshView mesh) { return measure_architecture(mesh, {.with_solidity = false}); }
+
 const DescriptorMeasure kMeasures[] = {
     {"height", [](MeshView m, const CanopyParams&) { return mesh_height(m); }, "maximum z of the vertices"},
     {"footprint", [](MeshView m, const CanopyParams&) { return mesh_footprint(m); },
@@ -59,13 +62,13 @@ const DescriptorMeasure kMeasures[] = {
      "widest section of the lowest quarter / widest of the upper half (a tree: <= 0.25)"},
     {"upper_loops", [](MeshView m, const CanopyParams&) { return static_cast<double>(tree_sections(m).upper_loops); },
      "most loops of a horizontal section in the upper half (branches: >= 3)"},
-    {"tips", [](MeshView m, const CanopyParams&) { return static_cast<double>(measure_architecture(m).tips); },
+    {"tips", [](MeshView m, const CanopyParams&) { return static_cast<double>(skeleton_measures(m).tips); },
      "end nodes of the level-set skeleton, noise pruned"},
-    {"limbs", [](MeshView m, const CanopyParams&) { return static_cast<double>(measure_architecture(m).limbs.size()); },
+    {"limbs", [](MeshView m, const CanopyParams&) { return static_cast<double>(skeleton_measures(m).limbs.size()); },
      "skeleton branches above a fork at least 3 times as long as thick"},
-    {"first_fork_height", [](MeshView m, const CanopyParams&) { return measure_architecture(m).first_fork_height; },
+    {"first_fork_height", [](MeshView m, const CanopyParams&) { return skeleton_measures(m).first_fork_height; },
      "height of the skeleton's lowest fork above the lowest vertex (the plant's height if none)"},
-    {"strahler", [](MeshView m, const CanopyParams&) { return static_cast<double>(measure_architecture(m).strahler); },
+    {"strahler", [](MeshView m, const CanopyParams&) { return static_cast<double>(skeleton_measures(m).strahler); },
      "Strahler order of the skeleton (1: no branching)"},
     {"solidity", [](MeshView m, const CanopyParams&) { return mesh_solidity(m); },
      "volume / convex-hull volume (NaN for an open mesh)"},

@@ -4,6 +4,7 @@
 #include "fitness/welded_mesh.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -113,26 +114,34 @@ std::pair<int, int> band_range(double t0, double t1, double t2) {
 }
 
 struct Corner {
-    Vec3 p;
-    double t;
+    Vec3 p = Vec3::Zero();
+    double t = 0.0;
+};
+
+// A convex polygon of at most 5 corners: a triangle cut by two planes.
+struct Polygon {
+    std::array<Corner, 5> corners;
+    int size = 0;
+    void push(const Corner& c) { corners[size++] = c; }
 };
 
 // The part of a triangle with t in [lo, hi] (Sutherland-Hodgman on t).
-std::vector<Corner> clip(std::vector<Corner> polygon, double lo, double hi) {
+Polygon clip(const Polygon& triangle, double lo, double hi) {
+    Polygon polygon = triangle;
     for (const double sign : {1.0, -1.0}) {
         const double bound = sign > 0 ? lo : hi;  // keep sign * (t - bound) >= 0
-        std::vector<Corner> kept;
-        for (std::size_t i = 0; i < polygon.size(); ++i) {
-            const Corner& a = polygon[i];
-            const Corner& b = polygon[(i + 1) % polygon.size()];
+        Polygon kept;
+        for (int i = 0; i < polygon.size; ++i) {
+            const Corner& a = polygon.corners[i];
+            const Corner& b = polygon.corners[(i + 1) % polygon.size];
             const double sa = sign * (a.t - bound), sb = sign * (b.t - bound);
-            if (sa >= 0) kept.push_back(a);
+            if (sa >= 0) kept.push(a);
             if ((sa < 0 && sb > 0) || (sa > 0 && sb < 0)) {
                 const double s = sa / (sa - sb);
-                kept.push_back({a.p + s * (b.p - a.p), bound});
+                kept.push({a.p + s * (b.p - a.p), bound});
             }
         }
-        polygon = std::move(kept);
+        polygon = kept;
     }
     return polygon;
 }
@@ -157,15 +166,17 @@ double gradient_norm(const Vec3& a, const Vec3& b, const Vec3& c, double da, dou
     return ((db - da) * e2.cross(n) + (dc - da) * n.cross(e1)).norm() / n2;
 }
 
-Piece piece_of(const std::vector<Corner>& polygon, double grad) {
+Piece piece_of(const Polygon& polygon, double grad) {
     Piece piece;
-    for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-        const double a = 0.5 * (polygon[i].p - polygon[0].p).cross(polygon[i + 1].p - polygon[0].p).norm();
+    const auto& c = polygon.corners;
+    for (int i = 1; i + 1 < polygon.size; ++i) {
+        const double a = 0.5 * (c[i].p - c[0].p).cross(c[i + 1].p - c[0].p).norm();
         piece.area += a;
-        piece.moment += a * (polygon[0].p + polygon[i].p + polygon[i + 1].p) / 3.0;
+        piece.moment += a * (c[0].p + c[i].p + c[i + 1].p) / 3.0;
     }
     piece.level_length = piece.area * grad;
-    for (const Corner& c : polygon) piece.t_lo = std::min(piece.t_lo, c.t), piece.t_hi = std::max(piece.t_hi, c.t);
+    for (int i = 0; i < polygon.size; ++i)
+        piece.t_lo = std::min(piece.t_lo, c[i].t), piece.t_hi = std::max(piece.t_hi, c[i].t);
     return piece;
 }
 
@@ -189,8 +200,8 @@ Fragments clip_into_bands(const MeshArrays& mesh, const std::vector<double>& d, 
         const Face& g = mesh.faces[f];
         if (d[g[0]] == kUnreached) continue;  // the whole triangle is (its edges join its corners)
         const Vec3 &a = mesh.positions[g[0]], &b = mesh.positions[g[1]], &c = mesh.positions[g[2]];
-        const std::vector<Corner> triangle = {{a, d[g[0]] / w}, {b, d[g[1]] / w}, {c, d[g[2]] / w}};
-        const auto [lo, hi] = band_range(triangle[0].t, triangle[1].t, triangle[2].t);
+        const Polygon triangle{{{{a, d[g[0]] / w}, {b, d[g[1]] / w}, {c, d[g[2]] / w}}}, 3};
+        const auto [lo, hi] = band_range(triangle.corners[0].t, triangle.corners[1].t, triangle.corners[2].t);
         const double grad = gradient_norm(a, b, c, d[g[0]], d[g[1]], d[g[2]]);
         out.first[f] = static_cast<int>(out.band.size()), out.band_lo[f] = lo, out.band_hi[f] = hi;
         for (int k = lo; k <= hi; ++k) {

@@ -1,6 +1,7 @@
 // The architecture measures (fitness/architecture.hpp) on implicit shapes
 // with known answers, and on hostile meshes.
 #include "fitness/architecture.hpp"
+#include "fitness/descriptors.hpp"
 #include "fitness/skeleton.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 #include "tests/support/implicit_mesh.hpp"
@@ -154,6 +155,7 @@ TEST_CASE("architecture: a Y forks once into two limbs", "[fitness][architecture
     const Architecture strict = measure_architecture(mesh.view(), {.tip_slenderness = 6});
     CHECK(strict.tips == 1);
     CHECK(strict.strahler == 1);
+    CHECK(std::isnan(measure_architecture(mesh.view(), {.with_solidity = false}).solidity));
 }
 
 TEST_CASE("architecture: candelabras of 3 and 5 arms have 3 and 5 limbs", "[fitness][architecture]") {
@@ -255,4 +257,13 @@ TEST_CASE("architecture of hostile meshes: clear errors or the documented values
     const Architecture open = measure_architecture(test::make_square(0, 0, 1, 1, 0).view());
     CHECK(open.nodes >= 1);
     CHECK(std::isnan(open.solidity));
+}
+
+TEST_CASE("architecture descriptors: the measures by name; an open mesh's solidity refused", "[fitness][architecture]") {
+    const MeshArrays mesh = y_shape();
+    const Architecture a = measure_architecture(mesh.view());
+    const DescriptorSet set({"tips", "limbs", "first_fork_height", "strahler", "solidity"}, {});
+    const std::vector<double> values = set(mesh.view());
+    CHECK(values == std::vector<double>{2.0, 2.0, a.first_fork_height, 2.0, a.solidity});
+    CHECK_THROWS_WITH(set(test::make_square(0, 0, 1, 1, 0).view()), Catch::Contains("(solidity = nan)"));
 }
