@@ -19,7 +19,7 @@ namespace morphogen {
 struct ExposureParams {
     double cell = 1.0;         // growth.exposure_cell: voxel edge length
     int depth = 4;             // growth.exposure_depth: d = 0 .. depth
-    double full_shade = 8.0;   // growth.exposure_full_shade: shadow beyond a vertex's own that makes it dark
+    double full_shade = 32.0;  // growth.exposure_full_shade: shadow beyond a vertex's own that makes it dark
 };
 
 // Voxel indices are floor(coordinate / cell), clamped to ±2^40 (beyond that

@@ -55,7 +55,7 @@ struct GrowthParams {
     bool exposure = false;             // growth.exposure: input 3N-6 is the vertex's light
     double exposure_cell = 1.0;        // growth.exposure_cell: voxel edge length
     int exposure_depth = 4;            // growth.exposure_depth: levels a shadow reaches down
-    double exposure_full_shade = 8.0;  // growth.exposure_full_shade: shadow that makes a vertex dark
+    double exposure_full_shade = 32.0; // growth.exposure_full_shade: shadow that makes a vertex dark
     int signal_diffusion = 0;          // growth.signal_diffusion: iterations on channel 7 (0: off)
     double signal_rate = 0.5;          // growth.signal_rate: D of each iteration
 };

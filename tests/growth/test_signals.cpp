@@ -258,7 +258,7 @@ TEST_CASE("the signals' keys: branching mode only, in range, recorded only when 
     CHECK(resolved["exposure"] == true);
     CHECK(resolved["exposure_cell"] == 1.0);
     CHECK(resolved["exposure_depth"] == 4);
-    CHECK(resolved["exposure_full_shade"] == 8.0);
+    CHECK(resolved["exposure_full_shade"] == 32.0);
     CHECK(resolved["signal_diffusion"] == 3);
     CHECK(resolved["signal_rate"] == 0.5);
 }
