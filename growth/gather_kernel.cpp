@@ -97,6 +97,7 @@ template <int N_FIXED>
         own[3 * N - 2] = 0.5 + 0.5 * h.z();
         own[3 * N - 1] = in.positions[i].z() / in.height_scale;
         if (in.active != nullptr) own[3 * N - 5] = in.active[i];
+        if (in.exposure != nullptr) own[3 * N - 6] = in.exposure[i];
     }
 }
 

@@ -3,7 +3,8 @@
 // previous outputs — its own, the mean and the population standard deviation
 // over its neighbours — with the last four overwritten by its growth direction
 // and height (and, in the branching mode, the one before them by whether the
-// vertex grows, §5.8). Compiled for x86-64-v3 and baseline, picked at run time.
+// vertex grows, §5.8, and with growth.exposure the one before that by its
+// light, §5.9). Compiled for x86-64-v3 and baseline, picked at run time.
 #include <Eigen/Core>
 
 #include <cstdint>
@@ -21,6 +22,8 @@ struct GatherInput {
     // Branching mode (§5.8): 1 where the vertex grows, 0 where it is dormant;
     // null in the paper's mode.
     const std::uint8_t* active = nullptr;
+    // growth.exposure (§5.9): each vertex's exposure in [0, 1]; null when off.
+    const double* exposure = nullptr;
 };
 
 // Writes the 3N inputs of vertices [first, first + count), vertex after

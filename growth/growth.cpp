@@ -3,6 +3,7 @@
 #include "base/errors.hpp"
 #include "growth/branching.hpp"
 #include "growth/gather_kernel.hpp"
+#include "growth/signal_diffusion.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -20,6 +21,9 @@ Grower::Grower(const Network& network, const GrowthParams& params) : network_(ne
     if (params.mode == GrowthMode::branching && N < kBranchingOutputs)
         throw ConfigError("network.outputs: growth.mode \"branching\" needs at least " +
                           std::to_string(kBranchingOutputs) + " outputs, the network has " + std::to_string(N));
+    if (params.mode == GrowthMode::branching && params.signal_diffusion > 0 && N < kSignalOutputs)
+        throw ConfigError("network.outputs: growth.signal_diffusion needs at least " + std::to_string(kSignalOutputs) +
+                          " outputs, the network has " + std::to_string(N));
     flip_criteria_.min_normal_dot = std::cos(params.flip_max_angle_deg * std::numbers::pi / 180.0);
     flip_criteria_.min_valence = params.min_valence;
 }
@@ -63,6 +67,7 @@ kernel::GatherInput gather_input(const GrowthState& state, const GrowthWorkspace
     in.positions = state.mesh.positions().data();
     in.height_scale = height_scale;
     in.active = state.active.empty() ? nullptr : state.active.data();
+    in.exposure = workspace.exposure.empty() ? nullptr : workspace.exposure.data();
     return in;
 }
 
@@ -73,11 +78,24 @@ void gather_block(const void* input, std::ptrdiff_t first, int count, double* ro
 }
 }  // namespace
 
+void Grower::expose(const GrowthState& state, GrowthWorkspace& workspace) const {
+    if (params_.mode != GrowthMode::branching || !params_.exposure) {
+        workspace.exposure.clear();
+        return;
+    }
+    const ExposureParams exposure{params_.exposure_cell, params_.exposure_depth, params_.exposure_full_shade};
+    compute_exposure(state.mesh.positions(), exposure, workspace.exposure_grid, workspace.exposure);
+}
+
 void Grower::think(GrowthState& state, GrowthWorkspace& workspace) const {
+    expose(state, workspace);
     const kernel::GatherInput input = gather_input(state, workspace, params_.height_scale);
     workspace.next_outputs.resize(static_cast<std::size_t>(network_.outputs()) * state.mesh.num_vertices());
     network_.evaluate(kernel::InputSource{&gather_block, &input}, workspace.next_outputs, workspace.network);
     state.outputs.swap(workspace.next_outputs);
+    if (params_.mode == GrowthMode::branching && params_.signal_diffusion > 0)
+        diffuse_signal(state.outputs, state.outputs_per_vertex, workspace.neighbour_offsets, workspace.neighbours,
+                       params_.signal_diffusion, params_.signal_rate, workspace.diffusion);
 }
 
 void Grower::branch(GrowthState& state, GrowthWorkspace& workspace) const {

@@ -3,6 +3,7 @@
 // seed mesh step by step: think, move, split, flip. Deterministic: the same
 // network, parameters and seed give the same mesh bit for bit.
 #include "growth/collision.hpp"
+#include "growth/exposure.hpp"
 #include "growth/flip_pass.hpp"
 #include "growth/gather_kernel.hpp"
 #include "growth/growth_observer.hpp"
@@ -42,6 +43,10 @@ struct GrowthWorkspace {
     std::vector<int> neighbour_offsets, neighbours, cursor;  // CSR neighbour lists
     std::vector<double> split_w1;                            // w[1] of each vertex
     std::vector<Vec3> steered;                               // branching mode: new directions
+    // growth.exposure (§5.9): this step's exposure of every vertex; empty when off.
+    std::vector<double> exposure;
+    ExposureWorkspace exposure_grid;
+    std::vector<double> diffusion;  // growth.signal_diffusion (§5.9): the channel's iterates
     NetworkWorkspace network;
     // growth.collisions "prevent" only: positions before the move, the guard.
     std::vector<Vec3> before_move;
@@ -52,14 +57,15 @@ struct GrowthWorkspace {
 using StepObserver = std::function<void(const GrowthState&, int step)>;
 
 // What the gather of docs/algorithm.md §4.2 reads for `state`: its outputs,
-// directions and positions, and the neighbour lists in `workspace` (as the
-// neighbours phase left them: valid until the mesh changes).
+// directions and positions, and the neighbour lists and exposures in
+// `workspace` (as the neighbours phase and think left them: valid until the
+// mesh changes).
 kernel::GatherInput gather_input(const GrowthState& state, const GrowthWorkspace& workspace, double height_scale);
 
 class Grower {
 public:
     // Throws ConfigError if the network does not fit (inputs != 3 * outputs, N < 3,
-    // or N < 7 in the branching mode).
+    // N < 7 in the branching mode, N < 8 with growth.signal_diffusion).
     Grower(const Network& network, const GrowthParams& params);
 
     // The state before step 0: the seed with every output 0.5.
@@ -75,8 +81,11 @@ private:
     // The neighbour lists (CSR) of the mesh as it stands.
     void build_neighbours(const TriMesh& mesh, GrowthWorkspace& workspace) const;
     // Gather (docs/algorithm.md §4.2) and network (§5.1), fused a block of
-    // vertices at a time: new outputs for every vertex.
+    // vertices at a time: new outputs for every vertex; with the signals of
+    // §5.9, the exposures first and the diffusion after.
     void think(GrowthState& state, GrowthWorkspace& workspace) const;
+    // §5.9: each vertex's exposure into workspace.exposure (emptied when off).
+    void expose(const GrowthState& state, GrowthWorkspace& workspace) const;
     // Branching mode (§5.8): stop and start growth, turn the directions.
     void branch(GrowthState& state, GrowthWorkspace& workspace) const;
     void move(GrowthState& state) const;

@@ -17,6 +17,44 @@ NetworkParams read_network_params(ObjectReader& reader) {
     return p;
 }
 
+namespace {
+
+// The keys of the branching mode, all refused in the paper's mode.
+constexpr const char* kBranchingKeys[] = {"turn_rate",           "exposure",         "exposure_cell", "exposure_depth",
+                                          "exposure_full_shade", "signal_diffusion", "signal_rate"};
+
+// Refuses `key` when given: it means nothing unless `condition` holds.
+void refuse_unless(ObjectReader& reader, const char* key, const char* condition) {
+    if (reader.raw(key) != nullptr) reader.issues().add(reader.path_of(key), std::string("is used only with ") + condition);
+}
+
+// The signals of docs/algorithm.md §5.9. A signal that is off is left out of
+// the resolved config, with its own keys, so a branching config that does not
+// use them resolves to the same bytes as before they existed (and its
+// checkpoints still resume).
+void read_signal_params(ObjectReader& reader, GrowthParams& p) {
+    p.exposure = reader.boolean("exposure", p.exposure);
+    if (p.exposure) {
+        p.exposure_cell = reader.number("exposure_cell", p.exposure_cell, 1e-6, 1e6);
+        p.exposure_depth = static_cast<int>(reader.integer("exposure_depth", p.exposure_depth, 0, 16));
+        p.exposure_full_shade =
+            reader.number("exposure_full_shade", p.exposure_full_shade, 0.0, 1e6, /*min_exclusive=*/true);
+    } else {
+        reader.drop_resolved("exposure");
+        for (const char* key : {"exposure_cell", "exposure_depth", "exposure_full_shade"})
+            refuse_unless(reader, key, "growth.exposure true");
+    }
+    p.signal_diffusion = static_cast<int>(reader.integer("signal_diffusion", p.signal_diffusion, 0, 64));
+    if (p.signal_diffusion > 0) {
+        p.signal_rate = reader.number("signal_rate", p.signal_rate, 0.0, 1.0, /*min_exclusive=*/true);
+    } else {
+        reader.drop_resolved("signal_diffusion");
+        refuse_unless(reader, "signal_rate", "growth.signal_diffusion > 0");
+    }
+}
+
+}  // namespace
+
 GrowthParams read_growth_params(ObjectReader& reader) {
     constexpr double big = std::numeric_limits<double>::max();
     GrowthParams p;
@@ -39,11 +77,11 @@ GrowthParams read_growth_params(ObjectReader& reader) {
     p.mode = reader.choice("mode", "paper", {"paper", "branching"}) == "branching" ? GrowthMode::branching
                                                                                : GrowthMode::paper;
     if (p.mode == GrowthMode::paper) {
-        // A turn rate means nothing to the paper's model: one given is a mistake.
-        if (reader.raw("turn_rate") != nullptr)
-            reader.issues().add(reader.path_of("turn_rate"), "is used only with growth.mode \"branching\"");
+        // The branching mode's keys mean nothing to the paper's model: one given is a mistake.
+        for (const char* key : kBranchingKeys) refuse_unless(reader, key, "growth.mode \"branching\"");
     } else {
         p.turn_rate = reader.number("turn_rate", p.turn_rate, 0.0, 1e6);
+        read_signal_params(reader, p);
     }
     if (p.seed_mesh.empty()) reader.issues().add(reader.path_of("seed_mesh"), "must name a built-in seed or a mesh file");
     reader.finish();

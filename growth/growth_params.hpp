@@ -29,6 +29,10 @@ enum class GrowthMode { paper, branching };
 
 // The network outputs the branching mode needs (channels 0-6).
 inline constexpr int kBranchingOutputs = 7;
+// growth.signal_diffusion (§5.9) spreads channel 7, the first one the
+// branching mode leaves to the network, so it needs N >= 8.
+inline constexpr int kSignalChannel = kBranchingOutputs;
+inline constexpr int kSignalOutputs = kSignalChannel + 1;
 
 struct GrowthParams {
     int steps = 200;
@@ -46,6 +50,14 @@ struct GrowthParams {
     Collisions collisions = Collisions::allow;
     GrowthMode mode = GrowthMode::paper;
     double turn_rate = 0.1;  // growth.turn_rate, branching mode only (§5.8)
+    // The signals of §5.9, branching mode only, each off by default (the
+    // step is then bit for bit the one without them).
+    bool exposure = false;             // growth.exposure: input 3N-6 is the vertex's light
+    double exposure_cell = 1.0;        // growth.exposure_cell: voxel edge length
+    int exposure_depth = 4;            // growth.exposure_depth: levels a shadow reaches down
+    double exposure_full_shade = 32.0; // growth.exposure_full_shade: shadow that makes a vertex dark
+    int signal_diffusion = 0;          // growth.signal_diffusion: iterations on channel 7 (0: off)
+    double signal_rate = 0.5;          // growth.signal_rate: D of each iteration
 };
 
 // Read a section; problems are added to reader.issues(), defaults fill gaps.

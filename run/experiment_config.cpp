@@ -114,6 +114,10 @@ ExperimentConfig read_experiment_config(const json& original, const std::string&
     if (config.growth.mode == GrowthMode::branching && config.network.outputs < kBranchingOutputs)
         issues.add("network.outputs", "growth.mode \"branching\" needs at least " + std::to_string(kBranchingOutputs) +
                                           " outputs, got " + std::to_string(config.network.outputs));
+    else if (config.growth.mode == GrowthMode::branching && config.growth.signal_diffusion > 0 &&
+             config.network.outputs < kSignalOutputs)
+        issues.add("network.outputs", "growth.signal_diffusion needs at least " + std::to_string(kSignalOutputs) +
+                                          " outputs (it spreads channel 7), got " + std::to_string(config.network.outputs));
     config.fitness = read_section(top, "fitness", issues, read_fitness);
     config.evolution = read_section(top, "evolution", issues,
                                     [&](ObjectReader& r) { return read_evolution_params(r, &config.algorithm); });

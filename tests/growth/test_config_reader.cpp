@@ -1,10 +1,12 @@
 #include "base/config_reader.hpp"
 #include "base/errors.hpp"
 #include "growth/growth_params.hpp"
+#include "tests/support/config_issues.hpp"
 
 #include <catch2/catch.hpp>
 
 using namespace morphogen;
+using morphogen::testing::has_issue;
 using nlohmann::json;
 
 namespace {
@@ -14,11 +16,6 @@ ConfigIssues read_growth(const json& section, GrowthParams* out = nullptr) {
     GrowthParams p = read_growth_params(reader);
     if (out) *out = p;
     return issues;
-}
-bool has_issue(const ConfigIssues& issues, const std::string& path, const std::string& text) {
-    for (const auto& i : issues.list())
-        if (i.path == path && i.message.find(text) != std::string::npos) return true;
-    return false;
 }
 }  // namespace
 

@@ -7,6 +7,8 @@
 #include "growth/network.hpp"
 #include "growth/seeds.hpp"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -52,6 +54,46 @@ struct ReferenceGrowth {
         h = turned;
     }
 
+    // §5.9 exposure, as Palubicki et al. describe it: every vertex adds shadow
+    // 2^-d to the voxels (I + dx, J + dy, K − d), |dx|, |dy| ≤ d, for d = 0 ..
+    // depth; a vertex's exposure is clamp((C − s + 1) / C, 0, 1), s the shadow
+    // of its voxel.
+    std::vector<double> exposure(const GrowthParams& p) const {
+        const auto voxel = [&](const Vec3& q) {
+            std::array<long long, 3> v{};
+            for (int axis = 0; axis < 3; ++axis)
+                v[axis] = static_cast<long long>(std::clamp(std::floor(q[axis] / p.exposure_cell), -1099511627776.0, 1099511627776.0));
+            return v;
+        };
+        std::map<std::array<long long, 3>, double> shadow;
+        for (const Vec3& q : x) {
+            const auto [I, J, K] = voxel(q);
+            for (int d = 0; d <= p.exposure_depth; ++d)
+                for (int dx = -d; dx <= d; ++dx)
+                    for (int dy = -d; dy <= d; ++dy) shadow[{I + dx, J + dy, K - d}] += std::pow(2.0, -d);
+        }
+        std::vector<double> e;
+        for (const Vec3& q : x)
+            e.push_back(std::clamp((p.exposure_full_shade - shadow[voxel(q)] + 1.0) / p.exposure_full_shade, 0.0, 1.0));
+        return e;
+    }
+
+    // §5.9 diffusion: `iterations` Jacobi steps of u := u + D (mean_nb(u) − u)
+    // on channel 7, every vertex from the previous iterate.
+    void diffuse(const std::vector<std::set<int>>& nb, int iterations, double rate) {
+        const int V = static_cast<int>(x.size());
+        for (int it = 0; it < iterations; ++it) {
+            std::vector<double> u(V);
+            for (int i = 0; i < V; ++i) {
+                double mean = 0;
+                for (int j : nb[i]) mean += w[j][7];
+                mean /= static_cast<double>(nb[i].size());
+                u[i] = w[i][7] + rate * (mean - w[i][7]);
+            }
+            for (int i = 0; i < V; ++i) w[i][7] = u[i];
+        }
+    }
+
     void step(int t, const Network& net, const GrowthParams& p) {
         const int V = static_cast<int>(x.size());
         const int N = net.outputs();
@@ -62,6 +104,8 @@ struct ReferenceGrowth {
                 for (int b : f)
                     if (a != b) nb[a].insert(b);
         std::vector<std::vector<double>> next(V);
+        const bool signals = !active.empty();  // §5.9's signals exist only in the branching mode
+        const std::vector<double> light = signals && p.exposure ? exposure(p) : std::vector<double>{};
         for (int i = 0; i < V; ++i) {
             std::vector<double> in(3 * N);
             for (int c = 0; c < N; ++c) {
@@ -80,9 +124,11 @@ struct ReferenceGrowth {
             in[3 * N - 2] = 0.5 + 0.5 * h[i].z();
             in[3 * N - 1] = x[i].z() / p.height_scale;
             if (!active.empty()) in[3 * N - 5] = active[i];
+            if (!light.empty()) in[3 * N - 6] = light[i];
             next[i] = net.evaluate_reference(in);
         }
         w = next;
+        if (signals && p.signal_diffusion > 0) diffuse(nb, p.signal_diffusion, p.signal_rate);
         if (!active.empty()) branch(nb, p.turn_rate);
         // 2. Move (a dormant vertex does not move).
         const auto d = [&](int i) { return !active.empty() && active[i] == 0 ? 0.0 : std::max(0.0, w[i][0] - 0.5); };
