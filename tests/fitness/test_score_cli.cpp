@@ -70,6 +70,7 @@ TEST_CASE("score --mesh prints the fitness and every metric", "[fitness][cli]") 
     CHECK(architecture["limbs"] == 0);
     CHECK(architecture["limb_lengths"] == json::array());
     CHECK(architecture["limb_thicknesses"] == json::array());
+    CHECK(architecture["limb_tip_z"] == json::array());
     CHECK(architecture["forks"] == 0);
     CHECK(architecture["strahler"] == 1);
     CHECK(architecture["first_fork_height"].get<double>() == Approx(11.0));
