@@ -44,7 +44,7 @@ void ContactGuard::list_faces(const std::vector<Vec3>& now, const std::vector<Ve
     // Cells about as large as a listed box: each box in a few cells, a point
     // query in one.
     const double cell = F > 0 && extent > 0.0 ? extent / static_cast<double>(F) : 1.0;
-    hash_.build(cell, boxes_);
+    grid_.build(boxes_, cell);
     listed_ = true;
 }
 
@@ -81,14 +81,18 @@ void ContactGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before, s
     if (!any) return;
     list_faces(x, before, faces, contact_distance);
     refuse_.assign(V, 0);
-    const auto moves = [&](int f) { return moving_[faces[f][0]] | moving_[faces[f][1]] | moving_[faces[f][2]]; };
+    face_moving_.resize(faces.size());
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        face_moving_[f] = moving_[faces[f][0]] | moving_[faces[f][1]] | moving_[faces[f][2]];
     // Every vertex against the faces listed near its path; a pair counts
     // when one of its two moves. Decided from the proposed state alone.
     for (int v = 0; v < V; ++v) {
         const Box3 path = Box3::of(before[v], x[v], x[v]);
-        hash_.for_each_candidate(path, [&](int f, const Box3& listed) {
+        const bool v_moves = moving_[v] != 0;
+        grid_.for_each_meeting(path, [&](int f) {
+            if (!(v_moves || face_moving_[f])) return;
             const Face& t = faces[f];
-            if (t[0] == v || t[1] == v || t[2] == v || !(moving_[v] | moves(f)) || !listed.overlaps(path)) return;
+            if (t[0] == v || t[1] == v || t[2] == v) return;
             const unsigned corners = touches(v, f, x, before, faces, neighbour_offsets, neighbours, contact_distance);
             if (corners == 0) return;
             // v, and the corners of f its nearest point lies between.
@@ -113,7 +117,7 @@ void ContactGuard::face_changed(const TriMesh& mesh, int f) {
     if (f < static_cast<int>(boxes_.size()) && boxes_[f].contains(box)) return;
     if (f >= static_cast<int>(boxes_.size())) boxes_.resize(static_cast<std::size_t>(f) + 1, box);
     boxes_[f] = box;
-    hash_.insert(f, box);
+    grid_.insert(f, box);
 }
 
 bool ContactGuard::allows(const TriMesh& mesh, int f, int g, const Face& new_f, const Face& new_g) {
@@ -131,8 +135,8 @@ bool ContactGuard::allows(const TriMesh& mesh, int f, int g, const Face& new_f, 
             query_ = 1;
         }
         bool hit = false;
-        hash_.for_each_candidate(box, [&](int j, const Box3& listed) {
-            if (hit || j == f || j == g || seen_[j] == query_ || !listed.overlaps(box)) return;
+        grid_.for_each_meeting(box, [&](int j) {
+            if (hit || j == f || j == g || seen_[j] == query_) return;
             seen_[j] = query_;
             const Face& fj = mesh.face(j);
             if (box.overlaps(face_box(x, fj)) && faces_intersect(*t, IndexedTriangle::of(x, fj))) hit = true;
@@ -144,7 +148,7 @@ bool ContactGuard::allows(const TriMesh& mesh, int f, int g, const Face& new_f, 
     const Box3 pair = boxes_[f].merged(boxes_[g]);
     for (const int h : {f, g}) {
         boxes_[h] = pair;
-        hash_.insert(h, pair);
+        grid_.insert(h, pair);
     }
     return true;
 }

@@ -2,15 +2,15 @@
 // growth.collisions "touch" (docs/algorithm.md §5.7.1): a vertex that comes
 // within growth.contact_distance of a face (or crosses it) in a move stays
 // where it was, and goes dormant; a flip that would make two faces
-// intersect is not done. Cheap by design: one hash of face boxes a step,
+// intersect is not done. Cheap by design: one grid of face boxes a step,
 // one lookup and a few point-triangle tests per vertex, every vertex decided
 // from the same proposed state at once (no rounds). It does not prove the
 // mesh clean: a grown mesh is checked once, by the fitness (§10.3).
 // Single-threaded and deterministic: what it decides depends only on the
 // mesh, never on the order it visits pairs in.
+#include "growth/contact_grid.hpp"
 #include "growth/flip_pass.hpp"
 #include "mesh/mesh.hpp"
-#include "mesh/spatial_hash.hpp"
 
 #include <cstdint>
 #include <span>
@@ -49,13 +49,14 @@ private:
                  const std::vector<Face>& faces, std::span<const int> neighbour_offsets,
                  std::span<const int> neighbours, double r) const;
 
-    SpatialHash hash_;
+    ContactGrid grid_;
     std::vector<Box3> boxes_;   // per face: the box it is listed with
-    std::vector<char> moving_;  // per vertex: moved by the proposal
+    std::vector<char> moving_;       // per vertex: moved by the proposal
+    std::vector<char> face_moving_;  // per face: has a corner that moved
     std::vector<char> refuse_;  // per vertex: in a contact pair, and moving
     std::vector<unsigned> seen_;  // per face: the query that met it last (allows)
     unsigned query_ = 0;
-    bool listed_ = false;  // whether the hash describes this step's faces
+    bool listed_ = false;  // whether the grid describes this step's faces
 };
 
 }  // namespace morphogen
