@@ -169,8 +169,8 @@ int run_bench(const BenchOptions& options) {
                 report["speedup_range"][0].get<double>(), report["speedup_range"][1].get<double>());
     std::printf("phases (1 thread): think %.1f%%  gather %.1f%%  move %.1f%%  split %.1f%%  flip %.1f%%", 100 * think / total,
                 100 * gather / total, 100 * move / total, 100 * split / total, 100 * flip / total);
-    // Only growth.collisions "prevent" has a collide phase (docs/algorithm.md §5.7).
-    if (config.growth.collisions == Collisions::prevent) std::printf("  collide %.1f%%", 100 * collide / total);
+    // Only "prevent" and "touch" have a collide phase (docs/algorithm.md §5.7).
+    if (config.growth.collisions != Collisions::allow) std::printf("  collide %.1f%%", 100 * collide / total);
     std::printf("\n");
     std::printf("think: %.2f M vertex-steps/s (%.1f GFLOP/s)\n", report["think_vertex_steps_per_s"].get<double>() * 1e-6,
                 report["network_gflops"].get<double>());

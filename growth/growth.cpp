@@ -35,6 +35,8 @@ GrowthState Grower::start(const Seed& seed) const {
     state.outputs_per_vertex = network_.outputs();
     state.outputs.assign(static_cast<std::size_t>(network_.outputs()) * seed.mesh.num_vertices(), 0.5);
     if (params_.mode == GrowthMode::branching) state.active.assign(static_cast<std::size_t>(seed.mesh.num_vertices()), 1);
+    else if (params_.collisions == Collisions::touch)
+        state.touched.assign(static_cast<std::size_t>(seed.mesh.num_vertices()), 0);
     return state;
 }
 
@@ -109,9 +111,14 @@ void Grower::move(GrowthState& state) const {
     const int V = state.mesh.num_vertices();
     const double* w = state.outputs.data();
     const std::ptrdiff_t N = state.outputs_per_vertex;
-    // d_i (§5.2); a dormant vertex (branching mode, §5.8) does not move.
+    // d_i (§5.2); a dormant vertex (branching mode, §5.8) does not move, nor
+    // one that touched in the paper's mode (§5.7.1).
     const std::uint8_t* active = state.active.empty() ? nullptr : state.active.data();
-    const auto step_of = [&](int i) { return active != nullptr && active[i] == 0 ? 0.0 : std::max(0.0, w[N * i] - 0.5); };
+    const std::uint8_t* touched = state.touched.empty() ? nullptr : state.touched.data();
+    const auto step_of = [&](int i) {
+        const bool dormant = (active != nullptr && active[i] == 0) || (touched != nullptr && touched[i] != 0);
+        return dormant ? 0.0 : std::max(0.0, w[N * i] - 0.5);
+    };
     double total = 0.0;
     for (int i = 0; i < V; ++i) total += step_of(i);
     if (total > 0.0) {
@@ -122,7 +129,17 @@ void Grower::move(GrowthState& state) const {
         for (Vec3& p : x) p.z() = std::max(p.z(), 0.0);
 }
 
-void Grower::split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuard* guard) const {
+void Grower::settle_contacts(GrowthState& state, GrowthWorkspace& workspace) const {
+    workspace.contact.settle_move(state.mesh, workspace.before_move, workspace.neighbour_offsets, workspace.neighbours,
+                                  params_.contact_distance, workspace.touching);
+    // Touch stops growth: dormant in the branching mode (the network may wake
+    // the vertex again, §5.8), stopped for good in the paper's.
+    std::vector<std::uint8_t>& stopped = state.active.empty() ? state.touched : state.active;
+    const std::uint8_t value = state.active.empty() ? 1 : 0;
+    for (const int v : workspace.touching) stopped[v] = value;
+}
+
+void Grower::split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuard* guard, ContactGuard* contact) const {
     TriMesh& mesh = state.mesh;
     const int N = state.outputs_per_vertex;
     const int F0 = mesh.num_faces();
@@ -170,8 +187,13 @@ void Grower::split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuar
         state.directions.push_back(direction);
         // Branching mode (§5.8): a new vertex grows only between three that grow.
         if (!state.active.empty()) state.active.push_back(state.active[a] & state.active[b] & state.active[c]);
+        // Likewise in the paper's mode with "touch" (§5.7.1): it grows only
+        // if no corner touched.
+        if (!state.touched.empty()) state.touched.push_back(state.touched[a] | state.touched[b] | state.touched[c]);
         if (guard != nullptr)
             for (const int written : {f, mesh.num_faces() - 2, mesh.num_faces() - 1}) guard->face_changed(mesh, written);
+        if (contact != nullptr)
+            for (const int written : {mesh.num_faces() - 2, mesh.num_faces() - 1}) contact->face_changed(mesh, written);
     }
 }
 
@@ -222,17 +244,23 @@ void Grower::step(GrowthState& state, GrowthWorkspace& workspace, GrowthObserver
     // growth.collisions "prevent" (docs/algorithm.md §5.7): the move is
     // settled, splits are listed and flips guarded, so no two faces intersect.
     CollisionGuard* guard = params_.collisions == Collisions::prevent ? &workspace.collision : nullptr;
+    // growth.collisions "touch" (§5.7.1): touching vertices stay and go
+    // dormant, flips are guarded; cheap, not a proof.
+    ContactGuard* contact = params_.collisions == Collisions::touch ? &workspace.contact : nullptr;
+    FlipGuard* flip_guard = guard != nullptr ? static_cast<FlipGuard*>(guard) : contact;
     phase(GrowthPhase::neighbours, [&] { build_neighbours(state.mesh, workspace); });
     phase(GrowthPhase::think, [&] { think(state, workspace); });
     if (params_.mode == GrowthMode::branching) phase(GrowthPhase::branch, [&] { branch(state, workspace); });
     phase(GrowthPhase::move, [&] {
-        if (guard != nullptr) workspace.before_move.assign(state.mesh.positions().begin(), state.mesh.positions().end());
+        if (flip_guard != nullptr)
+            workspace.before_move.assign(state.mesh.positions().begin(), state.mesh.positions().end());
         move(state);
     });
     if (guard != nullptr) phase(GrowthPhase::settle, [&] { guard->settle_move(state.mesh, workspace.before_move); });
-    phase(GrowthPhase::split, [&] { split(state, workspace, guard); });
+    if (contact != nullptr) phase(GrowthPhase::settle, [&] { settle_contacts(state, workspace); });
+    phase(GrowthPhase::split, [&] { split(state, workspace, guard, contact); });
     if ((state.steps_done + 1) % params_.flip_every == 0)
-        phase(GrowthPhase::flip, [&] { flip(state, workspace, guard, phases); });
+        phase(GrowthPhase::flip, [&] { flip(state, workspace, flip_guard, phases); });
     ++state.steps_done;
 }
 

@@ -4,6 +4,7 @@
 // network, parameters and seed give the same mesh bit for bit.
 #include "growth/collision.hpp"
 #include "growth/exposure.hpp"
+#include "growth/contact_guard.hpp"
 #include "growth/flip_pass.hpp"
 #include "growth/gather_kernel.hpp"
 #include "growth/growth_observer.hpp"
@@ -29,6 +30,9 @@ struct GrowthState {
     // growth.mode "branching" (§5.8): 1 where the vertex grows, 0 where it is
     // dormant; empty in the paper's mode.
     std::vector<std::uint8_t> active;
+    // growth.collisions "touch" in the paper's mode (§5.7.1): 1 where the
+    // vertex touched and stopped for good; empty otherwise.
+    std::vector<std::uint8_t> touched;
 
     double output(int vertex, int channel) const {
         return outputs[static_cast<std::size_t>(vertex) * outputs_per_vertex + channel];
@@ -51,6 +55,9 @@ struct GrowthWorkspace {
     // growth.collisions "prevent" only: positions before the move, the guard.
     std::vector<Vec3> before_move;
     CollisionGuard collision;
+    // growth.collisions "touch" only: the contact rule, the vertices it refused.
+    ContactGuard contact;
+    std::vector<int> touching;
 };
 
 // Called after every step with the step index t; for tests and animation.
@@ -89,8 +96,11 @@ private:
     // Branching mode (§5.8): stop and start growth, turn the directions.
     void branch(GrowthState& state, GrowthWorkspace& workspace) const;
     void move(GrowthState& state) const;
+    // growth.collisions "touch" (§5.7.1): refuses the touching vertices'
+    // moves and makes them dormant.
+    void settle_contacts(GrowthState& state, GrowthWorkspace& workspace) const;
     // With a guard, every face a split writes is reported to it (§5.7).
-    void split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuard* guard) const;
+    void split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuard* guard, ContactGuard* contact) const;
     // With a guard, each flip it tests is reported to `phases` as flip_guard.
     void flip(GrowthState& state, GrowthWorkspace& workspace, FlipGuard* guard, GrowthObserver* phases) const;
 

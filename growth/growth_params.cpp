@@ -72,8 +72,17 @@ GrowthParams read_growth_params(ObjectReader& reader) {
     // Beyond these the seed's area-weighted normals (products of two
     // coordinates) overflow or vanish; the mesh files' own bound is 1e9.
     p.seed_radius = reader.number("seed_radius", p.seed_radius, kMinSeedRadius, kMaxSeedRadius);
-    p.collisions = reader.choice("collisions", "allow", {"allow", "prevent"}) == "prevent" ? Collisions::prevent
-                                                                                       : Collisions::allow;
+    const std::string collisions = reader.choice("collisions", "allow", {"allow", "prevent", "touch"});
+    p.collisions = collisions == "prevent" ? Collisions::prevent
+                   : collisions == "touch" ? Collisions::touch
+                                           : Collisions::allow;
+    if (p.collisions != Collisions::touch) {
+        if (reader.raw("contact_distance") != nullptr)
+            reader.issues().add(reader.path_of("contact_distance"), "is used only with growth.collisions \"touch\"");
+    } else {
+        p.contact_distance = reader.number("contact_distance", p.contact_distance, 0.0, 1e6,
+                                           /*min_exclusive=*/true);
+    }
     p.mode = reader.choice("mode", "paper", {"paper", "branching"}) == "branching" ? GrowthMode::branching
                                                                                : GrowthMode::paper;
     if (p.mode == GrowthMode::paper) {

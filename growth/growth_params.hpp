@@ -19,8 +19,8 @@ inline constexpr double kMinSeedRadius = 1e-6;
 inline constexpr double kMaxSeedRadius = 1e6;
 
 // growth.collisions (docs/algorithm.md §5.7): whether a step may make the
-// surface pass through itself.
-enum class Collisions { allow, prevent };
+// surface pass through itself; "touch" (§5.7.1) stops a vertex at a contact.
+enum class Collisions { allow, prevent, touch };
 
 // growth.mode (docs/algorithm.md §5.8): the paper's model, or the branching
 // mode, in which outputs 3-6 also stop and start a vertex's growth and steer
@@ -58,6 +58,7 @@ struct GrowthParams {
     double exposure_full_shade = 32.0; // growth.exposure_full_shade: shadow that makes a vertex dark
     int signal_diffusion = 0;          // growth.signal_diffusion: iterations on channel 7 (0: off)
     double signal_rate = 0.5;          // growth.signal_rate: D of each iteration
+    double contact_distance = 0.1;  // growth.contact_distance, collisions "touch" only (§5.7.1)
 };
 
 // Read a section; problems are added to reader.issues(), defaults fill gaps.

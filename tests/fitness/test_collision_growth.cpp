@@ -144,3 +144,35 @@ TEST_CASE("the same 1000 genomes in the branching mode self-intersect when colli
     WARN(allowed << " of 1000 genomes self-intersect in the branching mode at the default settings when allowed");
     CHECK(allowed > 0);
 }
+
+// growth.collisions "touch" (docs/algorithm.md §5.7.1) is a cheap margin, not
+// a proof: a grown mesh is checked once at the end (fitness.reject_self_intersecting,
+// §10.3), and at most 1 % of random genomes may fail it.
+TEST_CASE("touch: at most 1 % of random genomes grow self-intersecting meshes", "[collision][contact]") {
+    GrowthParams params;
+    params.steps = 60;
+    params.max_vertices = 1500;
+    for (const GrowthParams& mode : {params, branching(params)}) {
+        const int bad = count_self_intersecting(with(mode, Collisions::touch), 1, 250);
+        WARN(bad << " of 250 genomes self-intersect with touch (60 steps, "
+                 << (mode.mode == GrowthMode::branching ? "branching" : "paper") << " mode)");
+        CHECK(bad <= 2);
+    }
+}
+
+TEST_CASE("touch: hostile genomes (saturated outputs or wide weights) grow clean meshes", "[collision][contact]") {
+    for (const GrowthParams& mode : {GrowthParams{}, branching(GrowthParams{})}) {
+        GrowthWorkspace workspace;
+        CHECK_FALSE(grows_self_intersecting(saturated_genome(), with(mode, Collisions::touch), workspace));
+        CHECK(count_self_intersecting(with(mode, Collisions::touch), 1, 8, 20.0) == 0);
+    }
+}
+
+TEST_CASE("touch: at most 1 % of 1000 random genomes self-intersect at the default settings", "[.][collision-slow]") {
+    for (const GrowthParams& mode : {GrowthParams{}, branching(GrowthParams{})}) {
+        const int bad = count_self_intersecting(with(mode, Collisions::touch), 1, 1000);
+        WARN(bad << " of 1000 genomes self-intersect with touch at the default settings ("
+                 << (mode.mode == GrowthMode::branching ? "branching" : "paper") << " mode)");
+        CHECK(bad <= 10);
+    }
+}

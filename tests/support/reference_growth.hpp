@@ -6,10 +6,12 @@
 #include "growth/growth_params.hpp"
 #include "growth/network.hpp"
 #include "growth/seeds.hpp"
+#include "mesh/face_pair.hpp"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <set>
@@ -94,6 +96,96 @@ struct ReferenceGrowth {
         }
     }
 
+    // ---- growth.collisions "touch" (§5.7.1), by brute force over every vertex and face ----
+    // Paper mode: 1 where a vertex touched and stopped for good (empty until
+    // the first settle, and in the branching mode, which uses `active`).
+    std::vector<int> touched;
+
+    bool touched_at(int i) const { return !touched.empty() && touched[i] == 1; }
+
+    // Distance from q to the closed triangle (a, b, c), and the corners its
+    // nearest point lies between (bit k: corner k): the plane where q projects
+    // inside, else the nearest of the three sides, or one end of it.
+    struct Nearest {
+        double distance;
+        unsigned corners;
+    };
+    static Nearest nearest_on_triangle(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+        Nearest best{std::numeric_limits<double>::infinity(), 0};
+        const Vec3 corner[3] = {a, b, c};
+        for (int k = 0; k < 3; ++k) {
+            const Vec3 &s = corner[k], &e = corner[(k + 1) % 3];
+            const double length2 = (e - s).squaredNorm();
+            const double u = length2 > 0 ? std::clamp((q - s).dot(e - s) / length2, 0.0, 1.0) : 0.0;
+            const double distance = (q - (s + u * (e - s))).norm();
+            const unsigned ends = u == 0 ? 1U << k : u == 1 ? 1U << (k + 1) % 3 : (1U << k) | (1U << (k + 1) % 3);
+            if (distance < best.distance) best = {distance, ends};
+        }
+        const Vec3 n = (b - a).cross(c - a);
+        if (n.norm() > 0 && projects_inside(q, a, b, c)) return {std::abs(n.normalized().dot(q - a)), 0b111};
+        return best;
+    }
+    static bool projects_inside(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c) {
+        const Vec3 n = (b - a).cross(c - a);
+        return (b - a).cross(q - a).dot(n) >= 0 && (c - b).cross(q - b).dot(n) >= 0 && (a - c).cross(q - c).dot(n) >= 0;
+    }
+    // Near by §5.7.1's measure (within r; for a face of the ring, within r of
+    // its plane with the projection inside): the corners of the nearest
+    // point, 0 if not near.
+    static unsigned contact_near(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c, double r, bool ring) {
+        const Nearest nearest = nearest_on_triangle(q, a, b, c);
+        if (!(nearest.distance < r)) return 0;
+        if (ring && !(nearest.corners == 0b111 && (b - a).cross(c - a).norm() > 0)) return 0;
+        return nearest.corners;
+    }
+
+    void settle_contacts(const std::vector<Vec3>& before, const std::vector<std::set<int>>& nb, double r) {
+        const int V = static_cast<int>(x.size());
+        if (active.empty() && touched.empty()) touched.assign(V, 0);
+        const auto moved = [&](int i) { return x[i] != before[i]; };
+        std::set<int> refuse;
+        for (int v = 0; v < V; ++v)
+            for (const Face& f : faces) {
+                const auto [a, b, c] = f;
+                if (v == a || v == b || v == c) continue;
+                if (!moved(v) && !moved(a) && !moved(b) && !moved(c)) continue;
+                const bool ring = nb[v].count(a) || nb[v].count(b) || nb[v].count(c);
+                unsigned corners = contact_near(x[v], x[a], x[b], x[c], r, ring);
+                const double s0 = (before[b] - before[a]).cross(before[c] - before[a]).dot(before[v] - before[a]);
+                const double s1 = (x[b] - x[a]).cross(x[c] - x[a]).dot(x[v] - x[a]);
+                if (corners == 0 && ((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0))) {
+                    const double t = s0 / (s0 - s1);
+                    const auto at = [&](int u) { return Vec3(before[u] + t * (x[u] - before[u])); };
+                    corners = contact_near(at(v), at(a), at(b), at(c), r, ring);
+                }
+                if (corners == 0) continue;
+                if (moved(v)) refuse.insert(v);
+                for (int k = 0; k < 3; ++k)
+                    if ((corners >> k & 1U) != 0 && moved(f[k])) refuse.insert(f[k]);
+            }
+        for (const int u : refuse) {
+            x[u] = before[u];
+            if (!active.empty()) active[u] = 0;
+            else touched[u] = 1;
+        }
+    }
+
+    // The flip guard: the new faces are not degenerate and intersect neither
+    // each other nor any face but the two they replace (mesh/face_pair.hpp).
+    bool contact_flip_allowed(int f, int g, const Face& new_f, const Face& new_g) const {
+        const IndexedTriangle tf = IndexedTriangle::of(x, new_f), tg = IndexedTriangle::of(x, new_g);
+        if (triangle_degenerate(x[new_f[0]], x[new_f[1]], x[new_f[2]])) return false;
+        if (triangle_degenerate(x[new_g[0]], x[new_g[1]], x[new_g[2]])) return false;
+        if (faces_intersect(tf, tg)) return false;
+        for (int j = 0; j < static_cast<int>(faces.size()); ++j) {
+            if (j == f || j == g) continue;
+            const IndexedTriangle tj = IndexedTriangle::of(x, faces[j]);
+            if (faces_intersect(tf, tj) || faces_intersect(tg, tj)) return false;
+        }
+        return true;
+    }
+    // ---- end of "touch" ----
+
     void step(int t, const Network& net, const GrowthParams& p) {
         const int V = static_cast<int>(x.size());
         const int N = net.outputs();
@@ -130,8 +222,13 @@ struct ReferenceGrowth {
         w = next;
         if (signals && p.signal_diffusion > 0) diffuse(nb, p.signal_diffusion, p.signal_rate);
         if (!active.empty()) branch(nb, p.turn_rate);
-        // 2. Move (a dormant vertex does not move).
-        const auto d = [&](int i) { return !active.empty() && active[i] == 0 ? 0.0 : std::max(0.0, w[i][0] - 0.5); };
+        // 2. Move (a dormant vertex does not move, nor one that touched: §5.7.1).
+        const std::vector<Vec3> before_move = x;
+        const auto d = [&](int i) {
+            if (!active.empty() && active[i] == 0) return 0.0;
+            if (touched_at(i)) return 0.0;
+            return std::max(0.0, w[i][0] - 0.5);
+        };
         double S = 0;
         for (int i = 0; i < V; ++i) S += d(i);
         if (S > 0) {
@@ -140,6 +237,7 @@ struct ReferenceGrowth {
         }
         if (p.ground)
             for (Vec3& q : x) q.z() = std::max(q.z(), 0.0);
+        if (p.collisions == Collisions::touch) settle_contacts(before_move, nb, p.contact_distance);
         // 3. Split.
         const int F0 = static_cast<int>(faces.size());
         for (int f = 0; f < F0; ++f) {
@@ -158,6 +256,7 @@ struct ReferenceGrowth {
             const Vec3 sum = nf + w[a][2] * h[a] + w[b][2] * h[b] + w[c][2] * h[c];
             h.push_back(sum.norm() < 1e-12 ? nf : Vec3(sum.normalized()));
             if (!active.empty()) active.push_back(active[a] && active[b] && active[c] ? 1 : 0);
+            if (!touched.empty()) touched.push_back(touched[a] || touched[b] || touched[c] ? 1 : 0);
             faces[f] = {a, b, v};
             faces.push_back({b, c, v});
             faces.push_back({c, a, v});
@@ -190,6 +289,7 @@ struct ReferenceGrowth {
                 if (!((x[D] - x[C]).cross(x[A] - x[C]).dot(n1 + n2) > 0)) continue;
                 if (!(valence[B] > p.min_valence && valence[D] > p.min_valence)) continue;
                 if (edge_face.count({A, C}) || edge_face.count({C, A})) continue;
+                if (p.collisions == Collisions::touch && !contact_flip_allowed(f, g, {A, B, C}, {C, D, A})) continue;
                 for (int k = 0; k < 3; ++k) {
                     edge_face.erase({faces[f][k], faces[f][(k + 1) % 3]});
                     edge_face.erase({faces[g][k], faces[g][(k + 1) % 3]});

@@ -1,0 +1,72 @@
+#include "growth/contact_grid.hpp"
+
+#include <cmath>
+#include <limits>
+
+namespace morphogen {
+
+namespace {
+// At most this many cells per listed box (on average): a sparse mesh gets
+// larger cells rather than a huge, empty grid.
+constexpr double kMaxCellsPerBox = 8.0;
+}  // namespace
+
+ContactGrid::FloatBox ContactGrid::outward(const Box3& box) {
+    // A float is within half an ulp, at most |x| * 2^-24, of the double it
+    // rounds: moving it out by twice that (and a little for underflow) is safe.
+    const auto down = [](double v) {
+        const auto f = static_cast<float>(v);
+        return f - (std::abs(f) * 0x1p-23f + 0x1p-126f);
+    };
+    const auto up = [](double v) {
+        const auto f = static_cast<float>(v);
+        return f + (std::abs(f) * 0x1p-23f + 0x1p-126f);
+    };
+    return {{down(box.lo.x()), down(box.lo.y()), down(box.lo.z())}, {up(box.hi.x()), up(box.hi.y()), up(box.hi.z())}};
+}
+
+template <class Fn>
+void ContactGrid::for_each_cell(const Box3& box, Fn&& fn) const {
+    const std::array<int, 3> lo = cell_of(box.lo), hi = cell_of(box.hi);
+    for (int i = lo[0]; i <= hi[0]; ++i)
+        for (int j = lo[1]; j <= hi[1]; ++j)
+            for (int k = lo[2]; k <= hi[2]; ++k) fn((i * cells_[1] + j) * cells_[2] + k);
+}
+
+void ContactGrid::build(const std::vector<Box3>& boxes, double cell_size) {
+    Box3 bounds{Vec3::Zero(), Vec3::Zero()};
+    if (!boxes.empty()) bounds = boxes.front();
+    for (const Box3& box : boxes) bounds = bounds.merged(box);
+    origin_ = bounds.lo;
+    const Vec3 size = bounds.hi - bounds.lo;
+    const double budget = kMaxCellsPerBox * static_cast<double>(std::max<std::size_t>(boxes.size(), 1));
+    const auto cells_for = [&](double cell) { return (size / cell).array().ceil().max(1.0).prod(); };
+    double cell = cell_size;
+    while (cells_for(cell) > budget) cell *= 2.0;
+    inverse_cell_ = 1.0 / cell;
+    for (int k = 0; k < 3; ++k) cells_[k] = std::max(1, static_cast<int>(std::ceil(size[k] * inverse_cell_)));
+    const std::size_t count = static_cast<std::size_t>(cells_[0]) * cells_[1] * cells_[2];
+    // Counting sort by cell: count, prefix sums, fill.
+    start_.assign(count + 1, 0);
+    for (const Box3& box : boxes) for_each_cell(box, [&](int c) { ++start_[c + 1]; });
+    for (std::size_t c = 0; c < count; ++c) start_[c + 1] += start_[c];
+    entries_.resize(start_[count]);
+    std::vector<std::uint32_t>& next = fill_cursor_;
+    next.assign(start_.begin(), start_.end() - 1);
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        const Entry entry{outward(boxes[i]), static_cast<int>(i)};
+        for_each_cell(boxes[i], [&](int c) { entries_[next[c]++] = entry; });
+    }
+    late_head_.assign(count, -1);
+    late_.clear();
+}
+
+void ContactGrid::insert(int id, const Box3& box) {
+    const Entry entry{outward(box), id};
+    for_each_cell(box, [&](int c) {
+        late_.push_back({entry, late_head_[c]});
+        late_head_[c] = static_cast<int>(late_.size()) - 1;
+    });
+}
+
+}  // namespace morphogen

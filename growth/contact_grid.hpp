@@ -1,0 +1,87 @@
+#pragma once
+// The broad phase of the contact rule (docs/algorithm.md §5.7.1), rebuilt
+// every step: a dense uniform grid over the boxes' common bounds, each box
+// listed by id in every cell it overlaps, with the box kept once per id in
+// single precision (rounded outward). Small entries (an int) and direct cell
+// indices make the per-step build and the point queries cheap; a grown mesh
+// is compact, so the grid stays small. Boxes added after the build (a split's
+// or a flip's faces) go into per-cell chains. Coordinates beyond the grid
+// fall into its border cells, so nothing is missed.
+#include "mesh/spatial_hash.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cstdint>
+#include <vector>
+
+namespace morphogen {
+
+class ContactGrid {
+public:
+
+    // Lists boxes[i] as id i, and nothing else, in cells of edge about
+    // `cell_size` (> 0; made larger where the bounds would need too many).
+    void build(const std::vector<Box3>& boxes, double cell_size);
+    // Lists `box` as `id` too (id may be new, one past the last, or listed).
+    void insert(int id, const Box3& box);
+
+    // Calls fn(id) for every entry whose box meets `box` (closed), once per
+    // cell they share: an id may come more than once, also with an older box.
+    template <class Fn>
+    void for_each_meeting(const Box3& box, Fn&& fn) const {
+        const FloatBox query = outward(box);
+        const std::array<int, 3> lo = cell_of(box.lo), hi = cell_of(box.hi);
+        for (int i = lo[0]; i <= hi[0]; ++i)
+            for (int j = lo[1]; j <= hi[1]; ++j) {
+                const int row = (i * cells_[1] + j) * cells_[2];
+                for (std::uint32_t e = start_[row + lo[2]]; e < start_[row + hi[2] + 1]; ++e)
+                    if (entries_[e].box.meets(query)) fn(entries_[e].id);
+                for (int k = lo[2]; k <= hi[2]; ++k)
+                    for (int e = late_head_[row + k]; e >= 0; e = late_[e].next)
+                        if (late_[e].entry.box.meets(query)) fn(late_[e].entry.id);
+            }
+    }
+
+private:
+    // A box in single precision, rounded outward: it holds the double box.
+    struct FloatBox {
+        float lo[3], hi[3];
+        bool meets(const FloatBox& o) const {
+            return (lo[0] <= o.hi[0]) & (o.lo[0] <= hi[0]) & (lo[1] <= o.hi[1]) & (o.lo[1] <= hi[1]) &
+                   (lo[2] <= o.hi[2]) & (o.lo[2] <= hi[2]);
+        }
+    };
+    struct Entry {
+        FloatBox box;
+        int id;
+    };
+    struct LateEntry {
+        Entry entry;
+        int next;
+    };
+    // The cell holding p, clamped into the grid. (A truncating cast, not
+    // std::floor, which is a library call in a portable build: the value is
+    // clamped at 0 first, where the two agree.)
+    std::array<int, 3> cell_of(const Vec3& p) const {
+        std::array<int, 3> c;
+        for (int k = 0; k < 3; ++k) {
+            const double t = (p[k] - origin_[k]) * inverse_cell_;
+            c[k] = t <= 0.0 ? 0 : t >= static_cast<double>(cells_[k] - 1) ? cells_[k] - 1 : static_cast<int>(t);
+        }
+        return c;
+    }
+    static FloatBox outward(const Box3& box);
+    template <class Fn>
+    void for_each_cell(const Box3& box, Fn&& fn) const;
+
+    Vec3 origin_ = Vec3::Zero();
+    double inverse_cell_ = 1.0;
+    std::array<int, 3> cells_{1, 1, 1};
+    std::vector<std::uint32_t> start_;  // per cell + 1: where its ids begin
+    std::vector<Entry> entries_;
+    std::vector<int> late_head_;        // per cell: the last inserted entry, -1 = none
+    std::vector<LateEntry> late_;
+    std::vector<std::uint32_t> fill_cursor_;  // build()'s scratch: each cell's next free slot
+};
+
+}  // namespace morphogen

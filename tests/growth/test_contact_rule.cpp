@@ -1,0 +1,222 @@
+// growth.collisions "touch" (docs/algorithm.md §5.7.1): the measures, the
+// rule on a hand-worked slab, its keys, and growth against the reference
+// implementation of §1.4 in both modes.
+#include "base/config_reader.hpp"
+#include "growth/contact_geometry.hpp"
+#include "growth/contact_guard.hpp"
+#include "growth/growth.hpp"
+#include "tests/support/reference_compare.hpp"
+
+#include <catch2/catch.hpp>
+
+using namespace morphogen;
+using namespace morphogen::testing;
+
+namespace {
+
+// A closed slab: a 3 x 3 grid of vertices on top (z = 1, vertex i + 3j at
+// (i, j)) and one below (z = 0, vertex 9 + i + 3j), each square cut along
+// (i, j)-(i+1, j+1), the rims joined by walls; outward oriented. Vertex 4 is
+// the top's centre T, vertex 13 the bottom's centre B.
+TriMesh slab(const Vec3& bottom_centre = Vec3(1, 1, 0)) {
+    MeshArrays arrays;
+    for (const double z : {1.0, 0.0})
+        for (int j = 0; j < 3; ++j)
+            for (int i = 0; i < 3; ++i) arrays.positions.emplace_back(i, j, z);
+    arrays.positions[13] = bottom_centre;
+    const auto top = [](int i, int j) { return i + 3 * j; };
+    const auto bottom = [](int i, int j) { return 9 + i + 3 * j; };
+    for (int j = 0; j < 2; ++j)
+        for (int i = 0; i < 2; ++i) {
+            arrays.faces.push_back({top(i, j), top(i + 1, j), top(i + 1, j + 1)});
+            arrays.faces.push_back({top(i, j), top(i + 1, j + 1), top(i, j + 1)});
+            arrays.faces.push_back({bottom(i, j), bottom(i + 1, j + 1), bottom(i + 1, j)});
+            arrays.faces.push_back({bottom(i, j), bottom(i, j + 1), bottom(i + 1, j + 1)});
+        }
+    const int rim[8][2] = {{0, 0}, {1, 0}, {2, 0}, {2, 1}, {2, 2}, {1, 2}, {0, 2}, {0, 1}};  // counter-clockwise
+    for (int k = 0; k < 8; ++k) {
+        const auto [pi, pj] = rim[k];
+        const auto [qi, qj] = rim[(k + 1) % 8];
+        arrays.faces.push_back({bottom(pi, pj), bottom(qi, qj), top(qi, qj)});
+        arrays.faces.push_back({bottom(pi, pj), top(qi, qj), top(pi, pj)});
+    }
+    return TriMesh::from_arrays(std::move(arrays), "slab");
+}
+
+struct Neighbours {
+    std::vector<int> offsets, list;
+};
+Neighbours neighbours_of(const TriMesh& mesh) {
+    Neighbours n;
+    n.offsets.push_back(0);
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+        mesh.for_each_neighbour(v, [&](int u) { n.list.push_back(u); });
+        n.offsets.push_back(static_cast<int>(n.list.size()));
+    }
+    return n;
+}
+
+// Proposes `moves` (vertex, new position) on `mesh` and settles them with
+// contact distance 0.1: the refused vertices.
+std::vector<int> refused_of(TriMesh mesh, const std::vector<std::pair<int, Vec3>>& moves) {
+    const std::vector<Vec3> before = mesh.positions();
+    for (const auto& [v, p] : moves) mesh.positions()[v] = p;
+    const std::vector<Vec3> proposed = mesh.positions();
+    const Neighbours n = neighbours_of(mesh);
+    ContactGuard guard;
+    std::vector<int> touching;
+    guard.settle_move(mesh, before, n.offsets, n.list, 0.1, touching);
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+        const bool refused = std::find(touching.begin(), touching.end(), v) != touching.end();
+        CHECK(mesh.position(v) == (refused ? before[v] : proposed[v]));
+    }
+    return touching;
+}
+
+}  // namespace
+
+TEST_CASE("the contact measures: distance to a triangle and its prism", "[contact]") {
+    const Vec3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
+    const auto check = [&](const Vec3& p, double squared, unsigned corners) {
+        const TriangleDistance d = distance_to_triangle(p, a, b, c);
+        CHECK(d.squared == Approx(squared));
+        CHECK(d.corners == corners);
+    };
+    check(Vec3(0.5, 0.5, 0.3), 0.09, 0b111);  // above the face
+    check(Vec3(-1, -1, 0), 2.0, 0b001);       // nearest corner a
+    check(Vec3(1, -0.5, 0), 0.25, 0b011);     // nearest side a-b
+    check(Vec3(2, 2, 0), 2.0, 0b110);         // nearest side b-c
+    check(Vec3(0, 3, 1), 2.0, 0b100);         // nearest corner c
+    CHECK(distance_to_triangle(Vec3(1, 1, 1), a, Vec3(1, 0, 0), Vec3(2, 0, 0)).squared == Approx(2.0));  // collinear
+    CHECK(in_prism(Vec3(0.5, 0.5, 0.05), a, b, c, 0.1));
+    CHECK(in_prism(Vec3(0.5, 0.5, -0.05), a, b, c, 0.1));
+    CHECK_FALSE(in_prism(Vec3(0.5, 0.5, 0.15), a, b, c, 0.1));
+    CHECK_FALSE(in_prism(Vec3(1, -0.05, 0), a, b, c, 0.1));  // 0.05 from the face, but beside it
+    CHECK_FALSE(in_prism(Vec3(0.5, 0.5, 0), a, Vec3(1, 0, 0), Vec3(2, 0, 0), 0.1));  // no normal
+}
+
+TEST_CASE("touch on a hand-worked slab: exactly the vertices of a contact stay", "[contact]") {
+    const TriMesh flat = slab();
+    // T comes down to 0.05 above B (within 0.1 of the bottom's faces around
+    // B, none of them in T's ring): T stays; a top corner moving up is free.
+    CHECK(refused_of(flat, {{4, Vec3(1, 1, 0.05)}, {0, Vec3(0, 0, 1.05)}}) == std::vector<int>{4});
+    // B rises through the top sheet and ends 0.5 above it: not near at the
+    // end, but its path crosses the face (1,1)-(2,1)-(2,2) inside.
+    CHECK(refused_of(flat, {{13, Vec3(1.2, 1.1, 1.5)}}) == std::vector<int>{13});
+    // The same vertex rising half way, inside the slab: nothing near.
+    CHECK(refused_of(flat, {{13, Vec3(1.2, 1.1, 0.5)}}).empty());
+    // The whole top comes down to 0.05 above the bottom: every top vertex
+    // touches (T by distance; the rim vertices by the prisms of the bottom
+    // faces of their ring, right below them). The bottom does not move.
+    std::vector<std::pair<int, Vec3>> sheet;
+    for (int v = 0; v < 9; ++v) sheet.emplace_back(v, flat.position(v) - Vec3(0, 0, 0.95));
+    CHECK(refused_of(flat, sheet) == std::vector<int>{0, 1, 2, 3, 4, 5, 6, 7, 8});
+}
+
+TEST_CASE("touch: a face moving onto a still vertex stays, all three corners", "[contact]") {
+    // B raised to 0.9 below the centroid of the top face (1,1)-(2,1)-(2,2)
+    // (vertices 4, 5, 8). That face comes down by 0.05: B, which does not
+    // move, is now 0.05 from it, so its three corners stay, though none of
+    // them comes near a face itself.
+    const std::vector<std::pair<int, Vec3>> face_down{
+        {4, Vec3(1, 1, 0.95)}, {5, Vec3(2, 1, 0.95)}, {8, Vec3(2, 2, 0.95)}};
+    CHECK(refused_of(slab(Vec3(5.0 / 3, 4.0 / 3, 0.9)), face_down) == std::vector<int>{4, 5, 8});
+    // With B flat on the bottom the same move is free.
+    CHECK(refused_of(slab(), face_down).empty());
+}
+
+TEST_CASE("touch: a flip into another face is refused, a free one allowed", "[contact]") {
+    // Whether faces 0 = (0,1,4) and 1 = (0,4,3), which share the diagonal
+    // 0-4, may become (3,0,1) and (1,4,3) in `mesh` (nothing moved this step).
+    const auto flip_allowed = [](TriMesh mesh) {
+        const Neighbours n = neighbours_of(mesh);
+        ContactGuard guard;
+        std::vector<int> touching;
+        const std::vector<Vec3> still = mesh.positions();
+        guard.settle_move(mesh, still, n.offsets, n.list, 0.1, touching);
+        return guard.allows(mesh, 0, 1, Face{3, 0, 1}, Face{1, 4, 3});
+    };
+    CHECK(flip_allowed(slab()));  // both new faces lie on the top
+    // Vertex 3 pulled below the bottom: the new face (3,0,1) would cross
+    // the bottom faces, which share no vertex with it.
+    TriMesh pulled = slab();
+    pulled.positions()[3] = Vec3(0, 1, -1);
+    CHECK_FALSE(flip_allowed(pulled));
+}
+
+TEST_CASE("growth.contact_distance: read with touch, refused otherwise and out of range", "[contact][config]") {
+    const auto read = [](const char* text, GrowthParams* out = nullptr) {
+        const nlohmann::json section = nlohmann::json::parse(text);
+        ConfigIssues issues;
+        ObjectReader reader(&section, "growth", issues);
+        const GrowthParams p = read_growth_params(reader);
+        if (out != nullptr) *out = p;
+        std::string all;
+        for (const auto& issue : issues.list()) all += issue.path + ": " + issue.message + "\n";
+        return all;
+    };
+    GrowthParams p;
+    CHECK(read(R"({"collisions": "touch"})", &p).empty());
+    CHECK(p.collisions == Collisions::touch);
+    CHECK(p.contact_distance == 0.1);
+    CHECK(read(R"({"collisions": "touch", "contact_distance": 0.25})", &p).empty());
+    CHECK(p.contact_distance == 0.25);
+    CHECK_THAT(read(R"({"contact_distance": 0.25})"), Catch::Contains("growth.contact_distance: is used only with"));
+    CHECK_THAT(read(R"({"collisions": "prevent", "contact_distance": 0.25})"), Catch::Contains("growth.contact_distance"));
+    CHECK_THAT(read(R"({"collisions": "touch", "contact_distance": 0})"), Catch::Contains("growth.contact_distance"));
+    CHECK_THAT(read(R"({"collisions": "touch", "contact_distance": -1})"), Catch::Contains("growth.contact_distance"));
+    CHECK_THAT(read(R"({"collisions": "touch", "contact_distance": "near"})"), Catch::Contains("growth.contact_distance"));
+}
+
+TEST_CASE("touch: the engine grows what the reference implementation grows, paper mode", "[contact][reference]") {
+    GrowthParams params;
+    params.steps = 40;
+    params.collisions = Collisions::touch;
+    params.contact_distance = GENERATE(0.1, 0.3);
+    const auto grown = require_same_as_reference(params, 300);
+    // The rule acted: some vertex stopped for good.
+    int stopped = 0;
+    for (const GrowthState& state : grown) stopped += static_cast<int>(std::count(state.touched.begin(), state.touched.end(), 1));
+    CHECK(stopped > 0);
+}
+
+TEST_CASE("touch: the engine grows what the reference implementation grows, branching mode", "[contact][reference]") {
+    GrowthParams params;
+    params.steps = 40;
+    params.mode = GrowthMode::branching;
+    params.collisions = Collisions::touch;
+    params.contact_distance = GENERATE(0.1, 0.3);
+    require_same_as_reference(params, 400);
+}
+
+TEST_CASE("touch: a refused vertex stays where it was and goes dormant", "[contact]") {
+    for (const GrowthMode mode : {GrowthMode::paper, GrowthMode::branching}) {
+        GrowthParams params;
+        params.steps = 60;
+        params.mode = mode;
+        params.collisions = Collisions::touch;
+        std::uint64_t refused = 0;
+        for (std::uint64_t g = 1; g <= 6; ++g) {
+            const Network network(random_test_genome({45, 30, 15}, g));
+            const Grower grower(network, params);
+            GrowthWorkspace workspace;
+            GrowthState state = grower.start(make_seed("icosahedron", 1.0));
+            for (int t = 0; t < params.steps; ++t) {
+                const std::vector<Vec3> before(state.mesh.positions());
+                grower.step(state, workspace);
+                for (const int v : workspace.touching) {
+                    INFO("genome " << g << " step " << t << " vertex " << v);
+                    CHECK(state.mesh.position(v) == before[v]);
+                    if (mode == GrowthMode::branching) CHECK(state.active[v] == 0);
+                    else CHECK(state.touched[v] == 1);
+                }
+                // Paper mode: a vertex that touched never moves again.
+                if (mode == GrowthMode::paper)
+                    for (std::size_t v = 0; v < before.size(); ++v)
+                        if (state.touched[v] == 1) CHECK(state.mesh.position(static_cast<int>(v)) == before[v]);
+                refused += workspace.touching.size();
+            }
+        }
+        CHECK(refused > 0);
+    }
+}
