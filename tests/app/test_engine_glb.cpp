@@ -1,0 +1,96 @@
+// grow and archive with --height (and the engine-ready GLB's other options)
+// through the real executable: names, extras, placement, refusals.
+#include "tests/app/evolve_test_support.hpp"
+#include "tests/engine/glb_reader.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <sstream>
+
+using namespace morphogen::test;
+
+namespace {
+
+const std::string kElitesConfig = R"({"network": {"outputs": 4, "hidden": [5]},
+ "growth": {"steps": 12, "max_vertices": 300},
+ "fitness": {"type": "canopy", "height": 1, "cell": 0.1},
+ "evolution": {"algorithm": "map_elites", "population": 12, "batch": 4, "mutation_rate": 0.2},
+ "descriptors": [{"measure": "height", "min": 0, "max": 3, "bins": 6},
+                 {"measure": "footprint", "min": 0, "max": 10, "bins": 5}],
+ "archive": {"type": "grid"},
+ "run": {"name": "engine", "seed": 3, "generations": 2, "export_every": 0}})";
+
+const tinygltf::Accessor& positions(const tinygltf::Model& model, int mesh) {
+    return model.accessors.at(model.meshes.at(mesh).primitives.at(0).attributes.at("POSITION"));
+}
+
+}  // namespace
+
+TEST_CASE("grow --height writes an engine-ready GLB, the same bytes every time", "[cli][engine]") {
+    TempDir dir("engine-grow");
+    const std::string a = q(dir.path / "a.glb"), b = q(dir.path / "b.glb");
+    const CliResult r = run_morphogen("grow --random 3 --steps 40 --height 2.5 -o " + a);
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    REQUIRE(run_morphogen("grow --random 3 --steps 40 --height 2.5 -o " + b).code == 0);
+    const std::string bytes = read_text(dir.path / "a.glb");
+    CHECK(bytes == read_text(dir.path / "b.glb"));
+
+    const tinygltf::Model model = parse_glb(bytes);
+    REQUIRE(model.nodes.size() == 1);
+    const std::string name = model.nodes[0].name;
+    CHECK(name.rfind("plant_", 0) == 0);
+    CHECK(name.size() == 6 + 8);  // plant_ and the genome hash's first 8 hex digits
+    CHECK(model.meshes.at(0).name == name);
+    const tinygltf::Value& extras = model.nodes[0].extras;
+    CHECK(extras.Get("genome_hash").Get<std::string>().rfind(name.substr(6), 0) == 0);
+    CHECK(extras.Get("fitness").IsNumber());
+    CHECK(!extras.Has("birth_id"));
+    CHECK(positions(model, 0).minValues[1] == 0.0);
+    CHECK(positions(model, 0).maxValues[1] == Approx(2.5).epsilon(1e-6));
+}
+
+TEST_CASE("grow refuses bad engine options, naming the option", "[cli][engine]") {
+    TempDir dir("engine-refuse");
+    const std::string glb = q(dir.path / "p.glb");
+    for (const std::string bad : {"--height -1", "--height 0", "--height nan", "--height 20000"}) {
+        const CliResult r = run_morphogen("grow --random 3 --steps 5 " + bad + " -o " + glb);
+        INFO(bad << ": " << r.output);
+        CHECK(r.code == 2);
+        CHECK_THAT(r.output, Catch::Contains("--height"));
+    }
+    const CliResult obj = run_morphogen("grow --random 3 --steps 5 --height 2 -o " + q(dir.path / "p.obj"));
+    CHECK(obj.code == 2);
+    CHECK_THAT(obj.output, Catch::Contains("--height") && Catch::Contains(".glb"));
+    CHECK(!fs::exists(dir.path / "p.glb"));
+}
+
+TEST_CASE("archive --height names each elite plant_<birth> and records its run, cell and parents", "[cli][engine]") {
+    TempDir dir("engine-archive");
+    write_text(dir.path / "me.json", kElitesConfig);
+    const fs::path run = dir.path / "run", out = dir.path / "elites";
+    REQUIRE(run_morphogen("evolve " + q(dir.path / "me.json") + " --out " + q(run)).code == 0);
+    const CliResult r = run_morphogen("archive " + q(run) + " --out " + q(out) + " --height 1.5");
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    std::istringstream species(read_text(out / "species.csv"));
+    std::string line;
+    std::getline(species, line);
+    int elites = 0;
+    while (std::getline(species, line)) {
+        const std::string cell = line.substr(0, line.find(','));
+        const std::string file = line.substr(line.rfind(',') + 1);
+        const tinygltf::Model model = parse_glb(read_text(out / file));
+        const tinygltf::Value& extras = model.nodes.at(0).extras;
+        CHECK(model.nodes[0].name == "plant_" + std::to_string(extras.Get("birth_id").GetNumberAsInt()));
+        CHECK(std::to_string(extras.Get("cell").GetNumberAsInt()) == cell);
+        CHECK(extras.Get("run").Get<std::string>() == "engine");
+        CHECK(extras.Get("measures").Has("height"));
+        CHECK(extras.Get("parents").IsArray());
+        CHECK(positions(model, 0).maxValues[1] == Approx(1.5).epsilon(1e-6));
+        CHECK(fs::exists(out / (file.substr(0, file.size() - 4) + ".obj")));
+        ++elites;
+    }
+    CHECK(elites > 0);
+    CHECK(run_morphogen("archive " + q(run) + " --out " + q(out) + " --height -3").code == 2);
+}
