@@ -4,6 +4,7 @@
 #include "app/plant_export_options.hpp"
 #include "app/resource_options.hpp"
 #include "base/errors.hpp"
+#include "engine/birth_steps.hpp"
 #include "engine/plant_export.hpp"
 #include "fitness/descriptors.hpp"
 #include "growth/genome_io.hpp"
@@ -81,12 +82,15 @@ int run_grow(const GrowOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     GrowthWorkspace workspace;
     GrowthFrames recorded;
-    const GrowthState state = animating ? grow_with_frames(grower, network, frames, workspace, recorded)
-                                        : grower.grow(network, workspace);
+    BirthSteps births(grower.seed().mesh.num_vertices());  // for --wind
+    const StepObserver dating = options.plant.wind ? births.observer() : StepObserver{};
+    const GrowthState state = animating ? grow_with_frames(grower, network, frames, workspace, recorded, dating)
+                                        : grower.grow(network, workspace, dating);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     if (options.plant.engine_ready())
-        write_plant_glb(options.output, GrownPlant{.mesh = state.mesh.view(), .birth_steps = {}, .steps = state.steps_done},
+        write_plant_glb(options.output,
+                        GrownPlant{.mesh = state.mesh.view(), .birth_steps = births.steps(), .steps = state.steps_done},
                         grown_record(config, genome, state.mesh.view()), options.plant);
     else
         write_mesh(state.mesh.view(), options.output, options.mesh_options);

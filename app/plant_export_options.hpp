@@ -2,6 +2,7 @@
 // The options that ask grow and archive for engine-ready GLBs
 // (engine/plant_export.hpp, docs/game-engines.md):
 //   --height M  scale the plant to M metres (default: a model unit is a metre)
+//   --wind      the _WIND vertex attribute (engine/plant_wind.hpp)
 // Header-only: app/ holds at most 15 source files.
 #include "engine/plant_export.hpp"
 
@@ -16,6 +17,8 @@ namespace morphogen {
 inline void add_plant_export_options(CLI::App* command, PlantExportOptions& options) {
     command->add_option("--height", options.height_m,
                         "Engine-ready GLB: origin at the foot, scaled to this many metres (default: 1 unit = 1 m)");
+    command->add_flag("--wind", options.wind,
+                      "Engine-ready GLB with wind data: the _WIND vertex attribute (bend, flutter, phase, stiffness)");
 }
 
 // Throws CLI::ValidationError (exit 2) naming the option for a bad value, or

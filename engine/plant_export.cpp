@@ -3,6 +3,7 @@
 #include "base/atomic_file.hpp"
 #include "base/errors.hpp"
 #include "engine/plant_frame.hpp"
+#include "engine/plant_wind.hpp"
 #include "io/plant_glb.hpp"
 
 #include <cmath>
@@ -35,8 +36,11 @@ std::string plant_glb_bytes(const GrownPlant& plant, const PlantRecord& record, 
     extras["generator"] = "morphogen";
     extras["height_m"] = placed.height_m;
     extras["metres_per_unit"] = placed.metres_per_unit;
+    if (options.wind) extras["wind"] = "_WIND";
     PlantGlb glb{.name = "plant_" + record.id, .extras = std::move(extras), .levels = {}, .lod_nodes = false};
-    glb.levels.push_back(PlantLevel{.mesh = placed.mesh.view(), .wind = {}, .extras = {}});
+    std::vector<float> wind;
+    if (options.wind) wind = plant_wind(placed.mesh.view(), plant.birth_steps, plant.steps);
+    glb.levels.push_back(PlantLevel{.mesh = placed.mesh.view(), .wind = std::move(wind), .extras = {}});
     return plant_glb_bytes(glb, source);
 }
 

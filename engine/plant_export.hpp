@@ -39,7 +39,8 @@ struct GrownPlant {
 };
 
 // The GLB bytes. Throws ConfigError for bad options (plant_export_problem),
-// MeshError for a plant that cannot be placed or scaled, IoError naming
+// MeshError for a plant that cannot be placed or scaled,
+// std::invalid_argument for --wind without one birth step per vertex, IoError naming
 // `source` when it cannot be encoded.
 std::string plant_glb_bytes(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options,
                             const std::string& source);

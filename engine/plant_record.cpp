@@ -29,7 +29,7 @@ nlohmann::json record_json(const PlantRecord& record) {
     if (!measures.empty()) json["measures"] = measures;
     if (!record.run.empty()) json["run"] = record.run;
     if (record.birth) json["birth_id"] = *record.birth;
-    if (record.birth) json["parents"] = record.parents;
+    if (!record.parents.empty()) json["parents"] = record.parents;  // glTF tools drop empty arrays
     if (record.cell) json["cell"] = *record.cell;
     return json;
 }

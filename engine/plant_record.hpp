@@ -29,7 +29,7 @@ struct PlantRecord {
 // the same genome gives the same hash on every machine.
 std::string genome_hash(std::span<const double> params);
 
-// The record as a JSON object, absent fields left out.
+// The record as a JSON object, absent fields (and no parents) left out.
 nlohmann::json record_json(const PlantRecord& record);
 
 }  // namespace morphogen

@@ -1,5 +1,6 @@
 #include "run/plant_exports.hpp"
 
+#include "engine/birth_steps.hpp"
 #include "growth/genome_io.hpp"
 #include "io/mesh_io.hpp"
 
@@ -24,10 +25,14 @@ PlantRecord birth_record(const ExperimentConfig& config, const Individual& indiv
 
 void export_engine_plant(const GenomeGrower& grower, std::span<const double> params, const PlantRecord& record,
                          const PlantExportOptions& options, const std::filesystem::path& stem) {
-    const GrowthState state = grower.grow(params);
+    BirthSteps births(grower.seed().mesh.num_vertices());
+    GrowthWorkspace workspace;
+    const Network network(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())});
+    const GrowthState state = grower.grow(network, workspace, births.observer());
     const MeshView mesh = state.mesh.view();
-    write_plant_glb(stem.string() + ".glb", GrownPlant{.mesh = mesh, .birth_steps = {}, .steps = state.steps_done},
-                    record, options);
+    write_plant_glb(stem.string() + ".glb",
+                    GrownPlant{.mesh = mesh, .birth_steps = births.steps(), .steps = state.steps_done}, record,
+                    options);
     write_mesh(mesh, stem.string() + ".obj");
     save_genome(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())},
                 stem.string() + ".genome.json");

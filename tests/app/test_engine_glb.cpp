@@ -86,11 +86,29 @@ TEST_CASE("archive --height names each elite plant_<birth> and records its run, 
         CHECK(std::to_string(extras.Get("cell").GetNumberAsInt()) == cell);
         CHECK(extras.Get("run").Get<std::string>() == "engine");
         CHECK(extras.Get("measures").Has("height"));
-        CHECK(extras.Get("parents").IsArray());
+        if (extras.Has("parents")) CHECK(extras.Get("parents").IsArray());  // left out for the first population
         CHECK(positions(model, 0).maxValues[1] == Approx(1.5).epsilon(1e-6));
         CHECK(fs::exists(out / (file.substr(0, file.size() - 4) + ".obj")));
         ++elites;
     }
     CHECK(elites > 0);
     CHECK(run_morphogen("archive " + q(run) + " --out " + q(out) + " --height -3").code == 2);
+}
+
+TEST_CASE("grow --wind adds _WIND without changing the mesh, also while animating", "[cli][engine][wind]") {
+    TempDir dir("engine-wind");
+    REQUIRE(run_morphogen("grow --random 4 --steps 60 --height 3 -o " + q(dir.path / "still.glb")).code == 0);
+    const CliResult r = run_morphogen("grow --random 4 --steps 60 --height 3 --wind -o " + q(dir.path / "wind.glb") +
+                                      " --animate " + q(dir.path / "growth.glb") + " --frames 5");
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const tinygltf::Model still = parse_glb(read_text(dir.path / "still.glb"));
+    const tinygltf::Model wind = parse_glb(read_text(dir.path / "wind.glb"));
+    const auto& attributes = wind.meshes.at(0).primitives.at(0).attributes;
+    REQUIRE(attributes.count("_WIND") == 1);
+    CHECK(attributes.count("COLOR_0") == 0);
+    CHECK(accessor_floats(wind, attributes.at("POSITION")) ==
+          accessor_floats(still, still.meshes.at(0).primitives.at(0).attributes.at("POSITION")));
+    CHECK(accessor_floats(wind, attributes.at("_WIND")).size() == 4 * positions(wind, 0).count);
+    CHECK(fs::exists(dir.path / "growth.glb"));
 }
