@@ -11,14 +11,7 @@ using namespace morphogen::test;
 
 namespace {
 
-const std::string kElitesConfig = R"({"network": {"outputs": 4, "hidden": [5]},
- "growth": {"steps": 12, "max_vertices": 300},
- "fitness": {"type": "canopy", "height": 1, "cell": 0.1},
- "evolution": {"algorithm": "map_elites", "population": 12, "batch": 4, "mutation_rate": 0.2},
- "descriptors": [{"measure": "height", "min": 0, "max": 3, "bins": 6},
-                 {"measure": "footprint", "min": 0, "max": 10, "bins": 5}],
- "archive": {"type": "grid"},
- "run": {"name": "engine", "seed": 3, "generations": 2, "export_every": 0}})";
+const std::string kElitesConfig = std::string(MORPHOGEN_SOURCE_DIR) + "/tests/app/fixtures/engine_elites.json";
 
 const tinygltf::Accessor& positions(const tinygltf::Model& model, int mesh) {
     return model.accessors.at(model.meshes.at(mesh).primitives.at(0).attributes.at("POSITION"));
@@ -67,9 +60,8 @@ TEST_CASE("grow refuses bad engine options, naming the option", "[cli][engine]")
 
 TEST_CASE("archive --height names each elite plant_<birth> and records its run, cell and parents", "[cli][engine]") {
     TempDir dir("engine-archive");
-    write_text(dir.path / "me.json", kElitesConfig);
     const fs::path run = dir.path / "run", out = dir.path / "elites";
-    REQUIRE(run_morphogen("evolve " + q(dir.path / "me.json") + " --out " + q(run)).code == 0);
+    REQUIRE(run_morphogen("evolve " + q(kElitesConfig) + " --out " + q(run)).code == 0);
     const CliResult r = run_morphogen("archive " + q(run) + " --out " + q(out) + " --height 1.5");
     INFO(r.output);
     REQUIRE(r.code == 0);

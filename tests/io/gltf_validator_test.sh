@@ -25,17 +25,7 @@ cd "$work"
 "$exe" grow --random 3 --steps 60 -o wind.glb --wind >/dev/null
 "$exe" grow --random 3 --steps 60 -o height_wind.glb --height 4 --wind >/dev/null
 
-cat > elites.json <<'JSON'
-{"network": {"outputs": 4, "hidden": [5]},
- "growth": {"steps": 12, "max_vertices": 300},
- "fitness": {"type": "canopy", "height": 1, "cell": 0.1},
- "evolution": {"algorithm": "map_elites", "population": 12, "batch": 4, "mutation_rate": 0.2},
- "descriptors": [{"measure": "height", "min": 0, "max": 3, "bins": 6},
-                 {"measure": "footprint", "min": 0, "max": 10, "bins": 5}],
- "archive": {"type": "grid"},
- "run": {"seed": 3, "generations": 2, "export_every": 1}}
-JSON
-"$exe" evolve elites.json --out run >/dev/null 2>&1
+"$exe" evolve "$src/tests/app/fixtures/engine_elites.json" --out run >/dev/null 2>&1
 "$exe" archive run --out plain_elites >/dev/null
 "$exe" archive run --out engine_elites --height 1.5 --wind >/dev/null
 
