@@ -79,7 +79,7 @@ TEST_CASE("the four wind channels lie in [0, 1] and mean what the docs say", "[e
     CHECK_THROWS_AS(plant_wind(placed.mesh.view(), std::vector<int>(3, 0), 80), std::invalid_argument);
 }
 
-TEST_CASE("--wind adds a _WIND VEC4 attribute and leaves COLOR_0 out", "[engine][wind]") {
+TEST_CASE("wind data is a _WIND VEC4 attribute, and COLOR_0 stays out", "[engine][wind]") {
     const Grown grown = grow_dated(7, 50);
     PlantRecord record;
     record.id = "w";
