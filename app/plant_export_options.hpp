@@ -2,6 +2,7 @@
 // The options that ask grow and archive for engine-ready GLBs
 // (engine/plant_export.hpp, docs/game-engines.md):
 //   --height M  scale the plant to M metres (default: a model unit is a metre)
+//   --lods N    levels of detail LOD0 .. LOD(N-1) (engine/plant_lods.hpp)
 //   --wind      the _WIND vertex attribute (engine/plant_wind.hpp)
 // Header-only: app/ holds at most 15 source files.
 #include "engine/plant_export.hpp"
@@ -17,6 +18,10 @@ namespace morphogen {
 inline void add_plant_export_options(CLI::App* command, PlantExportOptions& options) {
     command->add_option("--height", options.height_m,
                         "Engine-ready GLB: origin at the foot, scaled to this many metres (default: 1 unit = 1 m)");
+    command->add_option("--lods", options.lods,
+                        "Engine-ready GLB with N levels of detail (1..8), child nodes plant_<id>_LOD0.., "
+                        "each about half the triangles of the one before")
+        ->check(CLI::Range(1, kMaxPlantLods));
     command->add_flag("--wind", options.wind,
                       "Engine-ready GLB with wind data: the _WIND vertex attribute (bend, flutter, phase, stiffness)");
 }

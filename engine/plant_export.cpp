@@ -3,6 +3,7 @@
 #include "base/atomic_file.hpp"
 #include "base/errors.hpp"
 #include "engine/plant_frame.hpp"
+#include "engine/plant_lods.hpp"
 #include "engine/plant_wind.hpp"
 #include "io/plant_glb.hpp"
 
@@ -37,10 +38,23 @@ std::string plant_glb_bytes(const GrownPlant& plant, const PlantRecord& record, 
     extras["height_m"] = placed.height_m;
     extras["metres_per_unit"] = placed.metres_per_unit;
     if (options.wind) extras["wind"] = "_WIND";
-    PlantGlb glb{.name = "plant_" + record.id, .extras = std::move(extras), .levels = {}, .lod_nodes = false};
     std::vector<float> wind;
     if (options.wind) wind = plant_wind(placed.mesh.view(), plant.birth_steps, plant.steps);
-    glb.levels.push_back(PlantLevel{.mesh = placed.mesh.view(), .wind = std::move(wind), .extras = {}});
+    PlantGlb glb{.name = "plant_" + record.id, .extras = std::move(extras), .levels = {}, .lod_nodes = options.lods > 0};
+    if (options.lods == 0) {
+        glb.levels.push_back(PlantLevel{.mesh = placed.mesh.view(), .wind = std::move(wind), .extras = {}});
+        return plant_glb_bytes(glb, source);
+    }
+    // The levels must outlive glb, which only views them.
+    const std::vector<MeshArrays> levels = simplify_lods(placed.mesh.view(), options.lods);
+    for (const MeshArrays& level : levels) {
+        std::vector<float> level_wind;
+        if (options.wind)
+            level_wind = glb.levels.empty() ? wind : transfer_wind(placed.mesh.view(), wind, level.view());
+        glb.levels.push_back(PlantLevel{.mesh = level.view(),
+                                        .wind = std::move(level_wind),
+                                        .extras = {{"triangles", level.faces.size()}}});
+    }
     return plant_glb_bytes(glb, source);
 }
 

@@ -52,6 +52,16 @@ TEST_CASE("grow refuses bad engine options, naming the option", "[cli][engine]")
         CHECK(r.code == 2);
         CHECK_THAT(r.output, Catch::Contains("--height"));
     }
+    for (const std::string bad : {"--lods 0", "--lods 9", "--lods two"}) {
+        const CliResult r = run_morphogen("grow --random 3 --steps 5 " + bad + " -o " + glb);
+        INFO(bad << ": " << r.output);
+        CHECK(r.code == 2);
+        CHECK_THAT(r.output, Catch::Contains("--lods"));
+    }
+    // Too few triangles for 8 levels: a mesh error naming --lods.
+    const CliResult small = run_morphogen("grow --random 3 --steps 0 --lods 8 -o " + glb);
+    CHECK(small.code == 4);
+    CHECK_THAT(small.output, Catch::Contains("--lods 8"));
     const CliResult obj = run_morphogen("grow --random 3 --steps 5 --height 2 -o " + q(dir.path / "p.obj"));
     CHECK(obj.code == 2);
     CHECK_THAT(obj.output, Catch::Contains("--height") && Catch::Contains(".glb"));
