@@ -13,7 +13,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_normal_change_placement.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Count_stop_predicate.h>
-#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_plane_policies.h>
+#include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/GarlandHeckbert_triangle_policies.h>
 #include <CGAL/Surface_mesh_simplification/edge_collapse.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/property_map.h>
@@ -67,7 +67,7 @@ MeshArrays to_arrays(Surface& surface) {
 // below the threshold, so 3/2 * faces + 1 stops at the first count <= faces.
 MeshArrays collapse_to(MeshView mesh, std::size_t faces) {
     Surface surface = to_surface(mesh);
-    using Policies = SMS::GarlandHeckbert_plane_policies<Surface, Kernel>;
+    using Policies = SMS::GarlandHeckbert_triangle_policies<Surface, Kernel>;
     Policies policies(surface);
     const SMS::Bounded_normal_change_placement<Policies::Get_placement> placement(policies.get_placement());
     const SMS::Count_stop_predicate<Surface> stop(faces * 3 / 2 + 1);

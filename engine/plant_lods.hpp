@@ -1,7 +1,9 @@
 #pragma once
 // Levels of detail of a plant (`--lods N`; docs/file-formats.md, "Levels of
-// detail"): CGAL's edge collapse with Garland-Heckbert plane policies, the
-// normal change of each collapse bounded so no triangle folds over. Each
+// detail"): CGAL's edge collapse with Garland-Heckbert triangle policies
+// (with plane quadrics a thin branch barely resists a vertex sliding along
+// it, and one plant lost a whole branch), the normal change of each collapse bounded so
+// no triangle folds over. Each
 // level keeps the mesh closed and manifold (an edge collapse on CGAL's
 // Surface_mesh keeps the link condition).
 #include "mesh/mesh.hpp"
