@@ -114,3 +114,32 @@ TEST_CASE("grow --wind adds _WIND without changing the mesh, also while animatin
     CHECK(accessor_floats(wind, attributes.at("_WIND")).size() == 4 * positions(wind, 0).count);
     CHECK(fs::exists(dir.path / "growth.glb"));
 }
+
+TEST_CASE("run.export_glb exports the best of generation engine-ready", "[cli][engine]") {
+    TempDir dir("engine-best");
+    const fs::path run = dir.path / "run";
+    const CliResult r = run_morphogen("evolve " + q(std::string(MORPHOGEN_SOURCE_DIR) +
+                                                   "/tests/app/fixtures/engine_best.json") + " --out " + q(run));
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    int exported = 0;
+    for (const auto& entry : fs::directory_iterator(run / "best")) {
+        if (entry.path().extension() != ".glb") continue;
+        const tinygltf::Model model = parse_glb(read_text(entry.path()));
+        const tinygltf::Node& plant = model.nodes.at(0);
+        const tinygltf::Value& extras = plant.extras;
+        CHECK(plant.name == "plant_" + std::to_string(extras.Get("birth_id").GetNumberAsInt()));
+        CHECK(extras.Get("run").Get<std::string>() == "engine-best");
+        CHECK(extras.Get("height_m").GetNumberAsDouble() == Approx(2.0));
+        CHECK(extras.Get("wind").Get<std::string>() == "_WIND");
+        REQUIRE(plant.children.size() == 2);
+        CHECK(model.nodes.at(static_cast<std::size_t>(plant.children[1])).name == plant.name + "_LOD1");
+        CHECK(fs::exists(fs::path(entry.path()).replace_extension(".obj")));
+        ++exported;
+    }
+    CHECK(exported == 3);  // generations 0, 1 and 2
+    write_text(dir.path / "bad.json", R"({"run": {"export_glb": {"lods": 9, "size": 1}}})");
+    const CliResult bad = run_morphogen("validate " + q(dir.path / "bad.json"));
+    CHECK(bad.code == 2);
+    CHECK_THAT(bad.output, Catch::Contains("run.export_glb.lods") && Catch::Contains("run.export_glb.size"));
+}

@@ -3,7 +3,8 @@
 # (tools/gltf, installed by scripts/setup.sh) with 0 errors and 0 warnings:
 # grow's plain and engine-ready GLBs (with and without wind and levels of
 # detail), the growth animation, a run's best of generation and archive's
-# elites (also with levels of detail).
+# elites (also with levels of detail), and the best of generation with
+# run.export_glb.
 # Usage: gltf_validator_test.sh MORPHOGEN SOURCE_DIR. Exit 77 (skipped) only
 # when node is not installed.
 set -euo pipefail
@@ -32,5 +33,6 @@ cd "$work"
 "$exe" archive run --out plain_elites >/dev/null
 "$exe" archive run --out engine_elites --height 1.5 --wind >/dev/null
 "$exe" archive run --out lod_elites --lods 2 --wind >/dev/null
+"$exe" evolve "$src/tests/app/fixtures/engine_best.json" --out engine_run >/dev/null 2>&1
 
-node "$src/tools/gltf/validate.js" ./*.glb run/best/*.glb plain_elites/*.glb engine_elites/*.glb lod_elites/*.glb
+node "$src/tools/gltf/validate.js" ./*.glb run/best/*.glb plain_elites/*.glb engine_elites/*.glb lod_elites/*.glb engine_run/best/*.glb
