@@ -122,7 +122,7 @@ TEST_CASE("LOD0 is closed and manifold as grown", "[engine][lods]") {
 // thin branches lose their tips. The counts guard the figures in
 // docs/file-formats.md with one plant of slack: CGAL samples the distance, and
 // a plant at 1.00 % falls on either side from run to run.
-TEST_CASE("levels of detail halve the triangles; their distances from LOD0 (100 genomes)", "[engine][lods]") {
+TEST_CASE("levels of detail halve the triangles and their distances from LOD0 are counted (100 genomes)", "[engine][lods]") {
     LodStats stats;
     check_lods(GenomeGrower(NetworkParams{}, GrowthParams{}), 1, 50, stats);
     check_lods(tree_grower(), 1, 50, stats);
