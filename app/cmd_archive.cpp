@@ -3,6 +3,7 @@
 // optionally the map of elites as a PNG (each occupied cell's plant at its
 // place on the descriptor grid, beside a fitness heatmap).
 #include "app/commands.hpp"
+#include "app/plant_export_options.hpp"
 #include "base/atomic_file.hpp"
 #include "base/errors.hpp"
 #include "report/render.hpp"
@@ -10,6 +11,7 @@
 #include "run/elites_search.hpp"
 #include "run/experiment_config.hpp"
 #include "run/growth_problem.hpp"
+#include "run/plant_exports.hpp"
 #include "run/run_directory.hpp"
 #include "run/run_records.hpp"
 
@@ -32,6 +34,7 @@ struct ArchiveOptions {
     std::string dir, out, png;
     std::uint64_t top = 0;  // 0 = every elite
     int size = 96;          // pixels per map cell
+    PlantExportOptions plant;
 };
 
 using Elite = std::pair<std::uint64_t, const Individual*>;  // cell, elite
@@ -159,12 +162,17 @@ int run_archive(const ArchiveOptions& o) {
     if (ec) throw IoError(out.string() + ": cannot create: " + ec.message());
     const std::size_t digits = std::to_string(archive.cells() > 0 ? archive.cells() - 1 : 0).size();
     std::string species = "cell,";
-    for (const DescriptorRange& range : archive.ranges()) species += range.name + ',';
+    std::vector<std::string> measure_names;
+    for (const DescriptorRange& range : archive.ranges()) species += range.name + ',', measure_names.push_back(range.name);
     species += "fitness,file\n";
     for (const auto& [cell, elite] : elites) {
         std::string stem = std::to_string(cell);
         stem = "cell_" + std::string(digits - stem.size(), '0') + stem;
-        problem.export_genome(elite->params, out / stem);
+        if (o.plant.engine_ready())
+            export_engine_plant(problem.grower(), elite->params, birth_record(config, *elite, measure_names, cell),
+                                o.plant, out / stem);
+        else
+            problem.export_genome(elite->params, out / stem);
         species += std::to_string(cell) + ',';
         for (double d : elite->descriptors) species += format_number(d) + ',';
         species += format_number(elite->fitness) + ',' + stem + ".glb\n";
@@ -189,7 +197,8 @@ void add_archive_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--top", options->top, "only the N fittest elites (0 = all)");
     cmd->add_option("--png", options->png, "draw the map of elites (grid archives) to this PNG file");
     cmd->add_option("--size", options->size, "pixels per map cell")->check(CLI::Range(32, 512));
-    select_on_pick(cmd, selected, options, run_archive);
+    add_plant_export_options(cmd, options->plant);
+    select_on_pick(cmd, selected, options, run_archive, [options] { check_plant_export_options(options->plant, ""); });
 }
 
 }  // namespace morphogen

@@ -1,8 +1,12 @@
 // `morphogen grow`: grow one genome and write its mesh.
 #include "app/commands.hpp"
 #include "app/mesh_stats.hpp"
+#include "app/plant_export_options.hpp"
 #include "app/resource_options.hpp"
 #include "base/errors.hpp"
+#include "engine/birth_steps.hpp"
+#include "engine/plant_export.hpp"
+#include "fitness/descriptors.hpp"
 #include "growth/genome_io.hpp"
 #include "growth/genome_grower.hpp"
 #include "io/mesh_io.hpp"
@@ -33,8 +37,29 @@ struct GrowOptions {
     std::optional<int> frames;
     double frame_seconds = kDefaultSecondsPerFrame;
     MeshWriteOptions mesh_options;
+    PlantExportOptions plant;
     ResourceOptions resources;
 };
+
+// What the engine-ready GLB's extras say about a grown genome: named by its
+// hash (it has no birth in a run), scored and measured by the config.
+PlantRecord grown_record(const ExperimentConfig& config, const Genome& genome, MeshView mesh) {
+    PlantRecord record;
+    record.genome_hash = genome_hash(genome.params);
+    record.id = record.genome_hash.substr(0, 8);
+    const FitnessOutcome outcome = config.fitness->evaluate(mesh);
+    if (outcome.valid) record.fitness = outcome.score;
+    const std::vector<std::string> names = config.qd.measure_names();
+    if (names.empty()) return record;
+    try {
+        const std::vector<double> values =
+            DescriptorSet(names, canopy_params_of(config.resolved.at("fitness")))(mesh);
+        for (std::size_t i = 0; i < names.size(); ++i) record.measures.emplace_back(names[i], values[i]);
+    } catch (const std::invalid_argument&) {
+        // A mesh a measure cannot take keeps no measures, as in a GA run's lineage.
+    }
+    return record;
+}
 
 int run_grow(const GrowOptions& options) {
     ExperimentConfig config = load_experiment_config(options.config);
@@ -57,11 +82,18 @@ int run_grow(const GrowOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     GrowthWorkspace workspace;
     GrowthFrames recorded;
-    const GrowthState state = animating ? grow_with_frames(grower, network, frames, workspace, recorded)
-                                        : grower.grow(network, workspace);
+    BirthSteps births(grower.seed().mesh.num_vertices());  // for --wind
+    const StepObserver dating = options.plant.wind ? births.observer() : StepObserver{};
+    const GrowthState state = animating ? grow_with_frames(grower, network, frames, workspace, recorded, dating)
+                                        : grower.grow(network, workspace, dating);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    write_mesh(state.mesh.view(), options.output, options.mesh_options);
+    if (options.plant.engine_ready())
+        write_plant_glb(options.output,
+                        GrownPlant{.mesh = state.mesh.view(), .birth_steps = births.steps(), .steps = state.steps_done},
+                        grown_record(config, genome, state.mesh.view()), options.plant);
+    else
+        write_mesh(state.mesh.view(), options.output, options.mesh_options);
     if (!options.save_genome.empty()) save_genome(genome, options.save_genome);
     const MeshStats stats = mesh_stats(state.mesh.view());
     std::printf("%s: %d vertices, %d faces, height %.3f, width %.3f, %d steps in %.3f s\n", options.output.c_str(),
@@ -108,8 +140,10 @@ void add_grow_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--save-genome", options->save_genome, "Also write the genome as JSON");
     cmd->add_flag("--ply-double", options->mesh_options.ply_double,
                   "PLY output: 64-bit coordinates and normals (exact) instead of float32 (what WebGL viewers draw)");
+    add_plant_export_options(cmd, options->plant);
     add_resource_options(cmd, options->resources);
     select_on_pick(cmd, selected, options, run_grow, [options, random, genome, animate, frames_obj, frames, frame_seconds] {
+        check_plant_export_options(options->plant, options->output);
         if (random->count() + genome->count() != 1)
             throw CLI::RequiredError("grow needs one of --random SEED or --genome FILE");
         if (frames->count() > 0 && animate->count() + frames_obj->count() == 0)

@@ -137,7 +137,7 @@ int add_mesh(tinygltf::Model& model, MeshView mesh, int material, const std::str
     return static_cast<int>(model.meshes.size()) - 1;
 }
 
-int add_floats(tinygltf::Model& model, std::span<const float> values, int type) {
+int add_floats(tinygltf::Model& model, std::span<const float> values, int type, int target) {
     const auto components = static_cast<std::size_t>(tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(type)));
     std::vector<unsigned char>& data = buffer_data(model);
     const std::size_t base = data.size();
@@ -148,7 +148,7 @@ int add_floats(tinygltf::Model& model, std::span<const float> values, int type) 
         lo[i % components] = std::min(lo[i % components], static_cast<double>(values[i]));
         hi[i % components] = std::max(hi[i % components], static_cast<double>(values[i]));
     }
-    const int view = add_view(model, base, values.size() * 4, 0);  // 0: no target (animation data)
+    const int view = add_view(model, base, values.size() * 4, target);
     const int acc = add_accessor(model, view, TINYGLTF_COMPONENT_TYPE_FLOAT, type, values.size() / components);
     model.accessors[acc].minValues = std::move(lo);
     model.accessors[acc].maxValues = std::move(hi);

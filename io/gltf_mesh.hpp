@@ -38,8 +38,9 @@ int add_mesh(tinygltf::Model& model, MeshView mesh, int material, const std::str
 
 // Appends `values` (count * components of `type`, e.g. TINYGLTF_TYPE_VEC3) to
 // buffer 0 as float32 and returns their accessor, with min/max (required for
-// animation inputs). For animation data: its buffer view has no target.
-int add_floats(tinygltf::Model& model, std::span<const float> values, int type);
+// animation inputs). `target` is the buffer view's: 0 (none) for animation
+// data, TINYGLTF_TARGET_ARRAY_BUFFER for a vertex attribute.
+int add_floats(tinygltf::Model& model, std::span<const float> values, int type, int target = 0);
 
 // The .glb bytes of `model`; IoError naming `path` if tinygltf cannot encode it.
 std::string glb_bytes(const tinygltf::Model& model, const std::string& path);

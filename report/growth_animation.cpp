@@ -71,7 +71,7 @@ std::vector<int> animation_frame_steps(int steps, int frames) {
 }
 
 GrowthState grow_with_frames(const GenomeGrower& grower, const Network& network, int count,
-                             GrowthWorkspace& workspace, GrowthFrames& frames) {
+                             GrowthWorkspace& workspace, GrowthFrames& frames, const StepObserver& also) {
     const int steps = grower.params().steps;
     check_frames(count, steps);
     frames.steps = animation_frame_steps(steps, count);
@@ -80,6 +80,7 @@ GrowthState grow_with_frames(const GenomeGrower& grower, const Network& network,
     if (frames.steps.front() == 0) frames.meshes.push_back(snapshot(grower.seed().mesh));  // start() keeps the seed's mesh
     std::size_t next = frames.meshes.size();
     const StepObserver take_frames = [&](const GrowthState& state, int t) {
+        if (also) also(state, t);
         if (next < frames.steps.size() && frames.steps[next] == t + 1) {
             frames.meshes.push_back(snapshot(state.mesh));
             ++next;

@@ -43,10 +43,10 @@ std::vector<int> animation_frame_steps(int steps, int frames);
 
 // Grows `network` exactly as grower.grow(network, workspace) does (the same
 // final state, returned) while copying into `frames` the meshes after
-// animation_frame_steps(steps, count) of its steps. Throws ConfigError for a
-// bad `count`.
+// animation_frame_steps(steps, count) of its steps, and calling `also` (when
+// set) after every step. Throws ConfigError for a bad `count`.
 GrowthState grow_with_frames(const GenomeGrower& grower, const Network& network, int count,
-                             GrowthWorkspace& workspace, GrowthFrames& frames);
+                             GrowthWorkspace& workspace, GrowthFrames& frames, const StepObserver& also = {});
 
 // Grows `genome` with config.network/config.growth and returns `frames` frames
 // (ConfigError when animation_frames_problem says no).

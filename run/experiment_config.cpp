@@ -74,6 +74,16 @@ RunParams read_run_params(ObjectReader& reader) {
         reader.integer("export_every", static_cast<long long>(p.export_every), 0, 1'000'000'000));
     p.threads = static_cast<int>(reader.integer("threads", p.threads, 0, 4096));
     p.name = reader.string("name", p.name);
+    if (const json* glb = reader.raw("export_glb"); glb != nullptr) {
+        ObjectReader options(glb, reader.path_of("export_glb"), reader.issues());
+        PlantExportOptions& o = p.export_glb.emplace();
+        // 0: a model unit is a metre; 0 levels: one mesh (as grow without --lods).
+        if (const double height = options.number("height", 0, 0, kMaxPlantHeightMetres); height > 0) o.height_m = height;
+        o.lods = static_cast<int>(options.integer("lods", 0, 0, kMaxPlantLods));
+        o.wind = options.boolean("wind", false);
+        options.finish();
+        reader.set_resolved("export_glb", options.resolved());
+    }
     if (!valid_name(p.name))
         reader.issues().add(reader.path_of("name"),
                             json(p.name).dump(-1, ' ', false, json::error_handler_t::replace) +

@@ -8,6 +8,7 @@
 // range) and throws one ConfigError listing them all with their key paths.
 // configs/schema.json documents the same keys, ranges and defaults (a test
 // keeps the two in step).
+#include "engine/plant_export.hpp"
 #include "evolution/evolution_params.hpp"
 #include "fitness/fitness.hpp"
 #include "growth/growth_params.hpp"
@@ -31,6 +32,9 @@ struct RunParams {
     std::uint64_t export_every = 1;      // generations between best-mesh exports; 0 = never
     int threads = 0;                 // worker threads; 0 = all cores
     std::string name;                // run name; "" = the config file's stem
+    // run.export_glb: the best of generation as an engine-ready GLB with
+    // these options (docs/config.md); none: the plain GLB.
+    std::optional<PlantExportOptions> export_glb;
 };
 
 struct ExperimentConfig {

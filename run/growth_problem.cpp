@@ -20,7 +20,7 @@ GrowthProblem::GrowthProblem(const ExperimentConfig& config)
       dimension_(parameter_count(grower_.layers())),
       fitness_(config.fitness),
       descriptors_decide_validity_(config.algorithm == Algorithm::map_elites),
-      keeps_exports_(config.run.export_every > 0) {
+      keeps_exports_(config.run.export_every > 0 && !config.run.export_glb) {
     if (!config.qd.descriptors.empty())
         descriptors_.emplace(config.qd.measure_names(), canopy_params_of(config.resolved.at("fitness")));
 }

@@ -53,7 +53,7 @@ private:
     std::shared_ptr<const Fitness> fitness_;
     std::optional<DescriptorSet> descriptors_;  // when the config has descriptors
     bool descriptors_decide_validity_;          // MAP-Elites: a failed measure makes the birth invalid
-    bool keeps_exports_;  // run.export_every > 0: evaluate_keeping keeps files
+    bool keeps_exports_;  // run.export_every > 0 with plain GLBs: evaluate_keeping keeps files
     // One per worker; evaluate() with worker w touches only workspaces_[w].
     mutable std::vector<GrowthWorkspace> workspaces_;
 };

@@ -2,6 +2,7 @@
 
 #include "base/atomic_file.hpp"
 #include "base/errors.hpp"
+#include "run/plant_exports.hpp"
 #include "run/run_records.hpp"
 
 #include <filesystem>
@@ -93,6 +94,14 @@ void RunRecorder::export_best(std::uint64_t generation) {
     if (best == nullptr) return;
     const std::filesystem::path stem = session_.paths.best_stem(generation);
     GrowthProblem& problem = problem_;
+    if (const auto& options = session_.config.run.export_glb) {
+        // Grown again on the I/O thread: an engine GLB needs each vertex's birth step.
+        io_.post([&problem, params = best->params, stem, options = *options,
+                  record = birth_record(session_.config, *best, session_.config.qd.measure_names(), std::nullopt)] {
+            export_engine_plant(problem.grower(), params, record, options, stem);
+        });
+        return;
+    }
     if (kept_id_ == best->id)
         io_.post([&problem, files = kept_files_, params = best->params, stem] {
             problem.export_kept(files, params, stem);

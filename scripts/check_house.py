@@ -15,7 +15,8 @@ BELOW = {
     'growth': {'base', 'mesh', 'io'},
     'fitness': {'base', 'mesh'},
 }
-BELOW['run'] = BELOW['growth'] | {'growth', 'fitness', 'evolution'}
+BELOW['engine'] = BELOW['growth'] | {'growth'}
+BELOW['run'] = BELOW['engine'] | {'engine', 'fitness', 'evolution'}
 BELOW['cluster'] = BELOW['run'] | {'run'}
 BELOW['report'] = BELOW['run'] | {'run'}
 BELOW['fuzz'] = BELOW['run'] | {'run'}

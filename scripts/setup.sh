@@ -10,14 +10,30 @@ packages=(
   libtinygltf-dev libstb-dev catch2
   libjs-three chromium python3   # report: three.js copied into each report; its browser tests
   libopenmpi-dev openmpi-bin
+  nodejs       # the Khronos glTF validator (tools/gltf) for the GLB tests
 )
 
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
+# Debian's nodejs comes without npm; other builds of nodejs bundle it.
+command -v npm >/dev/null || missing+=(npm)
+install_validator() {
+  # tools/gltf/package-lock.json pins it; npm ci only when it is not there yet.
+  local tools
+  tools="$(cd "$(dirname "$0")/.." && pwd)/tools/gltf"
+  if [ -d "$tools/node_modules/gltf-validator" ]; then
+    echo "setup: glTF validator present"
+  else
+    echo "setup: installing the glTF validator in tools/gltf"
+    (cd "$tools" && npm ci --no-audit --no-fund --loglevel=error)
+  fi
+}
+
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "setup: all ${#packages[@]} packages present"
+  echo "setup: all packages present"
+  install_validator
   exit 0
 fi
 
@@ -30,3 +46,4 @@ echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo[@]}" apt-get update -qq
 "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+install_validator

@@ -206,6 +206,11 @@ TEST_CASE("schema.json defaults equal the reader's defaults", "[app][config][sch
          [&](const std::string& path, const json& key_schema, const json& value) {
              if (path != "growth.mode") compare(path, key_schema, value);
          });
+    // run.export_glb, absent unless given: its keys' defaults.
+    walk(schema, schema, read_experiment_config(json{{"run", {{"export_glb", json::object()}}}}, "r").resolved, "",
+         [&](const std::string& path, const json& key_schema, const json& value) {
+             if (path.rfind("run.export_glb.", 0) == 0) compare(path, key_schema, value);
+         });
     CHECK(compared > 40);
     // every section's default is {} (all of its keys default)
     for (const char* section : {"network", "growth", "fitness", "evolution", "run"})

@@ -1,0 +1,45 @@
+#pragma once
+// The options that ask grow and archive for engine-ready GLBs
+// (engine/plant_export.hpp, docs/game-engines.md):
+//   --height M  scale the plant to M metres (default: a model unit is a metre)
+//   --lods N    levels of detail LOD0 .. LOD(N-1) (engine/plant_lods.hpp)
+//   --wind      the _WIND vertex attribute (engine/plant_wind.hpp)
+// Header-only: app/ holds at most 15 source files.
+#include "engine/plant_export.hpp"
+
+#include <CLI/CLI.hpp>
+
+#include <cctype>
+#include <filesystem>
+#include <string>
+
+namespace morphogen {
+
+inline void add_plant_export_options(CLI::App* command, PlantExportOptions& options) {
+    command->add_option("--height", options.height_m,
+                        "Engine-ready GLB: origin at the foot, scaled to this many metres (default: 1 unit = 1 m)");
+    command->add_option("--lods", options.lods,
+                        "Engine-ready GLB with N levels of detail (1..8), child nodes plant_<id>_LOD0.., "
+                        "each about half the triangles of the one before")
+        ->check(CLI::Range(1, kMaxPlantLods));
+    command->add_flag("--wind", options.wind,
+                      "Engine-ready GLB with wind data: the _WIND vertex attribute (bend, flutter, phase, stiffness)");
+}
+
+// Throws CLI::ValidationError (exit 2) naming the option for a bad value, or
+// when the options ask for an engine-ready GLB and `glb_path` (the output the
+// command writes them to; "" when it writes GLBs anyway) is not a .glb file.
+inline void check_plant_export_options(const PlantExportOptions& options, const std::string& glb_path) {
+    if (const std::string problem = plant_export_problem(options); !problem.empty())
+        throw CLI::ValidationError(problem);
+    if (!options.engine_ready() || glb_path.empty()) return;
+    std::string ext = std::filesystem::path(glb_path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (ext != ".glb") {
+        const char* option = options.lods > 0 ? "--lods" : options.wind ? "--wind" : "--height";
+        throw CLI::ValidationError(std::string(option) + ": writes an engine-ready GLB, so the output must be .glb, not '" +
+                                   glb_path + "'");
+    }
+}
+
+}  // namespace morphogen

@@ -1,0 +1,51 @@
+#pragma once
+// The engine-ready GLB of a grown plant (`--height`, `--lods`, `--wind` of
+// grow, archive and the best-of-generation export; docs/file-formats.md,
+// "Engine-ready GLB"): placed at its foot and scaled (plant_frame.hpp),
+// named plant_<id>, its record in extras (plant_record.hpp).
+#include "engine/plant_record.hpp"
+#include "mesh/mesh.hpp"
+
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <string>
+
+namespace morphogen {
+
+struct PlantExportOptions {
+    std::optional<double> height_m;  // --height: scale to this many metres; none: a unit is a metre
+    int lods = 0;                    // --lods: 0 writes one mesh, N >= 1 writes LOD0 .. LOD(N-1)
+    bool wind = false;               // --wind: the _WIND vertex attribute
+
+    // Whether any option asks for the engine-ready GLB rather than the plain one.
+    bool engine_ready() const { return height_m.has_value() || lods > 0 || wind; }
+};
+
+inline constexpr int kMaxPlantLods = 8;
+inline constexpr double kMaxPlantHeightMetres = 1e4;
+
+// Why `options` cannot be used, naming the option ("--height -1: must be a
+// positive number of metres"), or "" when they can.
+std::string plant_export_problem(const PlantExportOptions& options);
+
+// A grown plant as its growth left it.
+struct GrownPlant {
+    MeshView mesh;
+    // For --wind: the step after which each vertex first existed (0: the
+    // seed's), one per vertex, and the steps the growth did.
+    std::span<const int> birth_steps;
+    int steps = 0;
+};
+
+// The GLB bytes. Throws ConfigError for bad options (plant_export_problem),
+// MeshError for a plant that cannot be placed or scaled,
+// std::invalid_argument for --wind without one birth step per vertex, IoError naming
+// `source` when it cannot be encoded.
+std::string plant_glb_bytes(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options,
+                            const std::string& source);
+// Writes them atomically to `out` (base/atomic_file.hpp).
+void write_plant_glb(const std::filesystem::path& out, const GrownPlant& plant, const PlantRecord& record,
+                     const PlantExportOptions& options);
+
+}  // namespace morphogen

@@ -1,0 +1,41 @@
+#include "run/plant_exports.hpp"
+
+#include "engine/birth_steps.hpp"
+#include "growth/genome_io.hpp"
+#include "io/mesh_io.hpp"
+
+namespace morphogen {
+
+PlantRecord birth_record(const ExperimentConfig& config, const Individual& individual,
+                         const std::vector<std::string>& measure_names, std::optional<std::uint64_t> cell) {
+    PlantRecord record;
+    record.id = std::to_string(individual.id);
+    record.genome_hash = genome_hash(individual.params);
+    if (individual.valid()) record.fitness = individual.fitness;
+    if (individual.descriptors.size() == measure_names.size())
+        for (std::size_t i = 0; i < measure_names.size(); ++i)
+            record.measures.emplace_back(measure_names[i], individual.descriptors[i]);
+    record.run = config.run.name;
+    record.birth = individual.id;
+    if (individual.parent1) record.parents.push_back(*individual.parent1);
+    if (individual.parent2) record.parents.push_back(*individual.parent2);
+    record.cell = cell;
+    return record;
+}
+
+void export_engine_plant(const GenomeGrower& grower, std::span<const double> params, const PlantRecord& record,
+                         const PlantExportOptions& options, const std::filesystem::path& stem) {
+    BirthSteps births(grower.seed().mesh.num_vertices());
+    GrowthWorkspace workspace;
+    const Network network(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())});
+    const GrowthState state = grower.grow(network, workspace, births.observer());
+    const MeshView mesh = state.mesh.view();
+    write_plant_glb(stem.string() + ".glb",
+                    GrownPlant{.mesh = mesh, .birth_steps = births.steps(), .steps = state.steps_done}, record,
+                    options);
+    write_mesh(mesh, stem.string() + ".obj");
+    save_genome(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())},
+                stem.string() + ".genome.json");
+}
+
+}  // namespace morphogen

@@ -1,0 +1,145 @@
+// grow and archive with --height (and the engine-ready GLB's other options)
+// through the real executable: names, extras, placement, refusals.
+#include "tests/app/evolve_test_support.hpp"
+#include "tests/engine/glb_reader.hpp"
+
+#include <catch2/catch.hpp>
+
+#include <sstream>
+
+using namespace morphogen::test;
+
+namespace {
+
+const std::string kElitesConfig = std::string(MORPHOGEN_SOURCE_DIR) + "/tests/app/fixtures/engine_elites.json";
+
+const tinygltf::Accessor& positions(const tinygltf::Model& model, int mesh) {
+    return model.accessors.at(model.meshes.at(mesh).primitives.at(0).attributes.at("POSITION"));
+}
+
+}  // namespace
+
+TEST_CASE("grow --height writes an engine-ready GLB, the same bytes every time", "[cli][engine]") {
+    TempDir dir("engine-grow");
+    const std::string a = q(dir.path / "a.glb"), b = q(dir.path / "b.glb");
+    const CliResult r = run_morphogen("grow --random 3 --steps 40 --height 2.5 -o " + a);
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    REQUIRE(run_morphogen("grow --random 3 --steps 40 --height 2.5 -o " + b).code == 0);
+    const std::string bytes = read_text(dir.path / "a.glb");
+    CHECK(bytes == read_text(dir.path / "b.glb"));
+
+    const tinygltf::Model model = parse_glb(bytes);
+    REQUIRE(model.nodes.size() == 1);
+    const std::string name = model.nodes[0].name;
+    CHECK(name.rfind("plant_", 0) == 0);
+    CHECK(name.size() == 6 + 8);  // plant_ and the genome hash's first 8 hex digits
+    CHECK(model.meshes.at(0).name == name);
+    const tinygltf::Value& extras = model.nodes[0].extras;
+    CHECK(extras.Get("genome_hash").Get<std::string>().rfind(name.substr(6), 0) == 0);
+    CHECK(extras.Get("fitness").IsNumber());
+    CHECK(!extras.Has("birth_id"));
+    CHECK(positions(model, 0).minValues[1] == 0.0);
+    CHECK(positions(model, 0).maxValues[1] == Approx(2.5).epsilon(1e-6));
+}
+
+TEST_CASE("grow refuses bad engine options, naming the option", "[cli][engine]") {
+    TempDir dir("engine-refuse");
+    const std::string glb = q(dir.path / "p.glb");
+    for (const std::string bad : {"--height -1", "--height 0", "--height nan", "--height 20000"}) {
+        const CliResult r = run_morphogen("grow --random 3 --steps 5 " + bad + " -o " + glb);
+        INFO(bad << ": " << r.output);
+        CHECK(r.code == 2);
+        CHECK_THAT(r.output, Catch::Contains("--height"));
+    }
+    for (const std::string bad : {"--lods 0", "--lods 9", "--lods two"}) {
+        const CliResult r = run_morphogen("grow --random 3 --steps 5 " + bad + " -o " + glb);
+        INFO(bad << ": " << r.output);
+        CHECK(r.code == 2);
+        CHECK_THAT(r.output, Catch::Contains("--lods"));
+    }
+    // Too few triangles for 8 levels: a mesh error naming --lods.
+    const CliResult small = run_morphogen("grow --random 3 --steps 0 --lods 8 -o " + glb);
+    CHECK(small.code == 4);
+    CHECK_THAT(small.output, Catch::Contains("--lods 8"));
+    const CliResult obj = run_morphogen("grow --random 3 --steps 5 --height 2 -o " + q(dir.path / "p.obj"));
+    CHECK(obj.code == 2);
+    CHECK_THAT(obj.output, Catch::Contains("--height") && Catch::Contains(".glb"));
+    CHECK(!fs::exists(dir.path / "p.glb"));
+}
+
+TEST_CASE("archive --height names each elite plant_<birth> and records its run, cell and parents", "[cli][engine]") {
+    TempDir dir("engine-archive");
+    const fs::path run = dir.path / "run", out = dir.path / "elites";
+    REQUIRE(run_morphogen("evolve " + q(kElitesConfig) + " --out " + q(run)).code == 0);
+    const CliResult r = run_morphogen("archive " + q(run) + " --out " + q(out) + " --height 1.5");
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    std::istringstream species(read_text(out / "species.csv"));
+    std::string line;
+    std::getline(species, line);
+    int elites = 0;
+    while (std::getline(species, line)) {
+        const std::string cell = line.substr(0, line.find(','));
+        const std::string file = line.substr(line.rfind(',') + 1);
+        const tinygltf::Model model = parse_glb(read_text(out / file));
+        const tinygltf::Value& extras = model.nodes.at(0).extras;
+        CHECK(model.nodes[0].name == "plant_" + std::to_string(extras.Get("birth_id").GetNumberAsInt()));
+        CHECK(std::to_string(extras.Get("cell").GetNumberAsInt()) == cell);
+        CHECK(extras.Get("run").Get<std::string>() == "engine");
+        CHECK(extras.Get("measures").Has("height"));
+        if (extras.Has("parents")) CHECK(extras.Get("parents").IsArray());  // left out for the first population
+        CHECK(positions(model, 0).maxValues[1] == Approx(1.5).epsilon(1e-6));
+        CHECK(fs::exists(out / (file.substr(0, file.size() - 4) + ".obj")));
+        ++elites;
+    }
+    CHECK(elites > 0);
+    CHECK(run_morphogen("archive " + q(run) + " --out " + q(out) + " --height -3").code == 2);
+}
+
+TEST_CASE("grow --wind adds _WIND without changing the mesh, also while animating", "[cli][engine][wind]") {
+    TempDir dir("engine-wind");
+    REQUIRE(run_morphogen("grow --random 4 --steps 60 --height 3 -o " + q(dir.path / "still.glb")).code == 0);
+    const CliResult r = run_morphogen("grow --random 4 --steps 60 --height 3 --wind -o " + q(dir.path / "wind.glb") +
+                                      " --animate " + q(dir.path / "growth.glb") + " --frames 5");
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const tinygltf::Model still = parse_glb(read_text(dir.path / "still.glb"));
+    const tinygltf::Model wind = parse_glb(read_text(dir.path / "wind.glb"));
+    const auto& attributes = wind.meshes.at(0).primitives.at(0).attributes;
+    REQUIRE(attributes.count("_WIND") == 1);
+    CHECK(attributes.count("COLOR_0") == 0);
+    CHECK(accessor_floats(wind, attributes.at("POSITION")) ==
+          accessor_floats(still, still.meshes.at(0).primitives.at(0).attributes.at("POSITION")));
+    CHECK(accessor_floats(wind, attributes.at("_WIND")).size() == 4 * positions(wind, 0).count);
+    CHECK(fs::exists(dir.path / "growth.glb"));
+}
+
+TEST_CASE("run.export_glb exports the best of generation engine-ready", "[cli][engine]") {
+    TempDir dir("engine-best");
+    const fs::path run = dir.path / "run";
+    const CliResult r = run_morphogen("evolve " + q(std::string(MORPHOGEN_SOURCE_DIR) +
+                                                   "/tests/app/fixtures/engine_best.json") + " --out " + q(run));
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    int exported = 0;
+    for (const auto& entry : fs::directory_iterator(run / "best")) {
+        if (entry.path().extension() != ".glb") continue;
+        const tinygltf::Model model = parse_glb(read_text(entry.path()));
+        const tinygltf::Node& plant = model.nodes.at(0);
+        const tinygltf::Value& extras = plant.extras;
+        CHECK(plant.name == "plant_" + std::to_string(extras.Get("birth_id").GetNumberAsInt()));
+        CHECK(extras.Get("run").Get<std::string>() == "engine-best");
+        CHECK(extras.Get("height_m").GetNumberAsDouble() == Approx(2.0));
+        CHECK(extras.Get("wind").Get<std::string>() == "_WIND");
+        REQUIRE(plant.children.size() == 2);
+        CHECK(model.nodes.at(static_cast<std::size_t>(plant.children[1])).name == plant.name + "_LOD1");
+        CHECK(fs::exists(fs::path(entry.path()).replace_extension(".obj")));
+        ++exported;
+    }
+    CHECK(exported == 3);  // generations 0, 1 and 2
+    write_text(dir.path / "bad.json", R"({"run": {"export_glb": {"lods": 9, "size": 1}}})");
+    const CliResult bad = run_morphogen("validate " + q(dir.path / "bad.json"));
+    CHECK(bad.code == 2);
+    CHECK_THAT(bad.output, Catch::Contains("run.export_glb.lods") && Catch::Contains("run.export_glb.size"));
+}

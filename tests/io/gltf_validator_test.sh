@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Every kind of GLB morphogen writes passes the Khronos glTF validator
+# (tools/gltf, installed by scripts/setup.sh) with 0 errors and 0 warnings:
+# grow's plain and engine-ready GLBs (with and without wind and levels of
+# detail), the growth animation, a run's best of generation and archive's
+# elites (also with levels of detail), and the best of generation with
+# run.export_glb.
+# Usage: gltf_validator_test.sh MORPHOGEN SOURCE_DIR. Exit 77 (skipped) only
+# when node is not installed.
+set -euo pipefail
+exe=$1
+src=$2
+if ! command -v node >/dev/null; then
+  echo "SKIPPED: node is not installed (scripts/setup.sh installs nodejs and the validator)"
+  exit 77
+fi
+if [ ! -d "$src/tools/gltf/node_modules/gltf-validator" ]; then
+  echo "the Khronos validator is missing: run scripts/setup.sh (npm ci in tools/gltf)" >&2
+  exit 1
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+
+"$exe" grow --random 3 --steps 60 -o plain.glb --animate animation.glb --frames 8 >/dev/null
+"$exe" grow --random 3 --steps 60 -o height.glb --height 2.5 >/dev/null
+"$exe" grow --random 3 --steps 60 -o wind.glb --wind >/dev/null
+"$exe" grow --random 3 --steps 60 -o height_wind.glb --height 4 --wind >/dev/null
+"$exe" grow --random 3 --steps 200 -o lods.glb --lods 3 >/dev/null
+"$exe" grow --random 3 --steps 200 -o lods_height_wind.glb --lods 4 --height 4 --wind >/dev/null
+
+"$exe" evolve "$src/tests/app/fixtures/engine_elites.json" --out run >/dev/null 2>&1
+"$exe" archive run --out plain_elites >/dev/null
+"$exe" archive run --out engine_elites --height 1.5 --wind >/dev/null
+"$exe" archive run --out lod_elites --lods 2 --wind >/dev/null
+"$exe" evolve "$src/tests/app/fixtures/engine_best.json" --out engine_run >/dev/null 2>&1
+
+node "$src/tools/gltf/validate.js" ./*.glb run/best/*.glb plain_elites/*.glb engine_elites/*.glb lod_elites/*.glb engine_run/best/*.glb
