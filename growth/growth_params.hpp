@@ -46,7 +46,7 @@ struct GrowthParams {
     Collisions collisions = Collisions::allow;
     GrowthMode mode = GrowthMode::paper;
     double turn_rate = 0.1;  // growth.turn_rate, branching mode only (§5.8)
-    double contact_distance = 0.1;  // growth.contact_distance, collisions "touch" only (§5.7.1)
+    double contact_distance = 0.2;  // growth.contact_distance, collisions "touch" only (§5.7.1)
 };
 
 // Read a section; problems are added to reader.issues(), defaults fill gaps.

@@ -161,7 +161,7 @@ TEST_CASE("growth.contact_distance: read with touch, refused otherwise and out o
     GrowthParams p;
     CHECK(read(R"({"collisions": "touch"})", &p).empty());
     CHECK(p.collisions == Collisions::touch);
-    CHECK(p.contact_distance == 0.1);
+    CHECK(p.contact_distance == 0.2);
     CHECK(read(R"({"collisions": "touch", "contact_distance": 0.25})", &p).empty());
     CHECK(p.contact_distance == 0.25);
     CHECK_THAT(read(R"({"contact_distance": 0.25})"), Catch::Contains("growth.contact_distance: is used only with"));
