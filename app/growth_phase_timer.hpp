@@ -16,7 +16,7 @@ struct PhaseTimes {
     double move = 0;     // the move, and the branching mode's steering before it
     double split = 0;
     double flip = 0;     // less the guard's tests
-    double collide = 0;  // growth.collisions "prevent" (§5.7): settling moves, guarding flips
+    double collide = 0;  // growth.collisions "prevent" or "touch" (§5.7): settling moves, guarding flips
     std::uint64_t vertex_steps = 0;  // sum over steps of the vertices that thought
     double total() const { return gather + think + move + split + flip + collide; }
 };

@@ -38,14 +38,4 @@ TriangleDistance distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& 
     return {(ap - v * ab - w * ac).squaredNorm(), 0b111};
 }
 
-bool in_prism(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double r) {
-    const Vec3 n = (b - a).cross(c - a);
-    const double nn = n.squaredNorm();
-    if (!(nn > 0.0)) return false;
-    const double s = n.dot(p - a);
-    if (!(s * s < r * r * nn)) return false;
-    return (b - a).cross(p - a).dot(n) >= 0.0 && (c - b).cross(p - b).dot(n) >= 0.0 &&
-           (a - c).cross(p - c).dot(n) >= 0.0;
-}
-
 }  // namespace morphogen

@@ -1,7 +1,7 @@
 #pragma once
-// The two measures of nearness the contact rule of docs/algorithm.md §5.7.1
-// uses between a point and a triangle, in plain floating point (the rule is
-// a cheap margin, not an exact predicate).
+// The nearness the contact rule of docs/algorithm.md §5.7.1 measures between
+// a point and a triangle, in plain floating point (the rule is a cheap
+// margin, not an exact predicate).
 #include "mesh/mesh.hpp"
 
 namespace morphogen {
@@ -15,10 +15,5 @@ struct TriangleDistance {
     unsigned corners;
 };
 TriangleDistance distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
-
-// Whether p lies in the triangle's prism of half-thickness r: less than r
-// from its plane, and its projection on the plane inside the closed
-// triangle. False for a triangle without a normal (collinear corners).
-bool in_prism(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double r);
 
 }  // namespace morphogen

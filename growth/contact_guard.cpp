@@ -2,6 +2,7 @@
 
 #include "growth/contact_geometry.hpp"
 #include "mesh/face_pair.hpp"
+#include "mesh/fan_certificate.hpp"
 
 #include <algorithm>
 
@@ -10,25 +11,6 @@ namespace morphogen {
 namespace {
 
 Box3 face_box(const std::vector<Vec3>& x, const Face& f) { return Box3::of(x[f[0]], x[f[1]], x[f[2]]); }
-
-// Whether a corner of f is a neighbour of v: f lies in v's ring, where a
-// sliver's height, not a contact, can bring v close to it.
-bool in_ring(int v, const Face& f, std::span<const int> offsets, std::span<const int> neighbours) {
-    for (int k = offsets[v]; k < offsets[v + 1]; ++k) {
-        const int u = neighbours[k];
-        if (u == f[0] || u == f[1] || u == f[2]) return true;
-    }
-    return false;
-}
-
-// Whether p is near triangle (a, b, c) by the measure of §5.7.1 (within r;
-// for a face of v's ring, within its prism of half-thickness r): the corners
-// that carry the nearest point, or 0 when it is not near.
-unsigned near(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c, double r, bool ring) {
-    const TriangleDistance d = distance_to_triangle(p, a, b, c);
-    if (!(d.squared < r * r) || (ring && !in_prism(p, a, b, c, r))) return 0;
-    return d.corners;
-}
 
 }  // namespace
 
@@ -49,15 +31,10 @@ void ContactGuard::list_faces(const std::vector<Vec3>& now, const std::vector<Ve
 }
 
 unsigned ContactGuard::touches(int v, int f, const std::vector<Vec3>& now, const std::vector<Vec3>& before,
-                               const std::vector<Face>& faces, std::span<const int> neighbour_offsets,
-                               std::span<const int> neighbours, double r) const {
+                               const std::vector<Face>& faces, double r) {
     const auto [a, b, c] = faces[f];
-    // Near at the proposed positions. Whether f is in v's ring is asked only
-    // of the few pairs that are within r.
     const TriangleDistance d = distance_to_triangle(now[v], now[a], now[b], now[c]);
-    if (d.squared < r * r &&
-        (!in_ring(v, faces[f], neighbour_offsets, neighbours) || in_prism(now[v], now[a], now[b], now[c], r)))
-        return d.corners;
+    if (d.squared < r * r) return d.corners;
     // Crossed: v changed sides of f's plane over the move. Where the side
     // changes sign (everything moving linearly), v must be near f.
     const double s0 = (before[b] - before[a]).cross(before[c] - before[a]).dot(before[v] - before[a]);
@@ -65,7 +42,18 @@ unsigned ContactGuard::touches(int v, int f, const std::vector<Vec3>& now, const
     if (!((s0 < 0.0 && s1 > 0.0) || (s0 > 0.0 && s1 < 0.0))) return 0;
     const double t = s0 / (s0 - s1);
     const auto at = [&](int u) { return Vec3(before[u] + t * (now[u] - before[u])); };
-    return near(at(v), at(a), at(b), at(c), r, in_ring(v, faces[f], neighbour_offsets, neighbours));
+    const TriangleDistance crossing = distance_to_triangle(at(v), at(a), at(b), at(c));
+    return crossing.squared < r * r ? crossing.corners : 0;
+}
+
+void ContactGuard::refuse_tangled_fans(const TriMesh& mesh, const std::vector<char>& check,
+                                       std::span<const int> neighbour_offsets, std::span<const int> neighbours) {
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+        if (!check[v] || fan_certified(mesh, v, spokes_)) continue;
+        if (moving_[v]) refuse_[v] = 1;
+        for (int k = neighbour_offsets[v]; k < neighbour_offsets[v + 1]; ++k)
+            if (moving_[neighbours[k]]) refuse_[neighbours[k]] = 1;
+    }
 }
 
 void ContactGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before, std::span<const int> neighbour_offsets,
@@ -84,7 +72,7 @@ void ContactGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before, s
     face_moving_.resize(faces.size());
     for (std::size_t f = 0; f < faces.size(); ++f)
         face_moving_[f] = moving_[faces[f][0]] | moving_[faces[f][1]] | moving_[faces[f][2]];
-    // Every vertex against the faces listed near its path; a pair counts
+    // 1. Every vertex against the faces listed near its path; a pair counts
     // when one of its two moves. Decided from the proposed state alone.
     for (int v = 0; v < V; ++v) {
         const Box3 path = Box3::of(before[v], x[v], x[v]);
@@ -93,7 +81,7 @@ void ContactGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before, s
             if (!(v_moves || face_moving_[f])) return;
             const Face& t = faces[f];
             if (t[0] == v || t[1] == v || t[2] == v) return;
-            const unsigned corners = touches(v, f, x, before, faces, neighbour_offsets, neighbours, contact_distance);
+            const unsigned corners = touches(v, f, x, before, faces, contact_distance);
             if (corners == 0) return;
             // v, and the corners of f its nearest point lies between.
             if (moving_[v]) refuse_[v] = 1;
@@ -101,6 +89,26 @@ void ContactGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before, s
                 if ((corners >> k & 1U) != 0 && moving_[t[k]]) refuse_[t[k]] = 1;
         });
     }
+    // 2. Every fan the move changes must stay certified (no two of its faces
+    // can meet): the faces around a vertex are too close for the distance.
+    check_.assign(V, 0);
+    for (int v = 0; v < V; ++v) {
+        bool changed = moving_[v] != 0;
+        for (int k = neighbour_offsets[v]; k < neighbour_offsets[v + 1] && !changed; ++k)
+            changed = moving_[neighbours[k]] != 0;
+        check_[v] = changed;
+    }
+    refuse_tangled_fans(mesh, check_, neighbour_offsets, neighbours);
+    // 3. The refused go back; the fans around them changed again, and are
+    // checked once more (one round: what it refuses goes back unchecked).
+    check_.assign(V, 0);
+    for (int v = 0; v < V; ++v) {
+        if (!refuse_[v]) continue;
+        x[v] = before[v];
+        check_[v] = 1;
+        for (int k = neighbour_offsets[v]; k < neighbour_offsets[v + 1]; ++k) check_[neighbours[k]] = 1;
+    }
+    refuse_tangled_fans(mesh, check_, neighbour_offsets, neighbours);
     for (int v = 0; v < V; ++v)
         if (refuse_[v]) {
             x[v] = before[v];

@@ -13,11 +13,11 @@ enum class GrowthPhase {
     neighbours,  // §5.1: the neighbour lists of the mesh as it stands
     think,       // §5.1, §4.4: gather and network, fused a block of vertices at a time
     branch,      // §5.8, growth.mode "branching" only: stop, start and steer
-    move,        // §5.2 (with growth.collisions "prevent", remembering the positions first)
-    settle,      // §5.7, growth.collisions "prevent" only: the move settled
+    move,        // §5.2 (with growth.collisions "prevent" or "touch", remembering the positions first)
+    settle,      // §5.7, growth.collisions "prevent" or "touch" (§5.7.1) only: the move settled
     split,       // §5.3
     flip,        // §5.4, on the steps growth.flip_every picks
-    flip_guard,  // §5.7, inside flip: the collision guard testing one flip
+    flip_guard,  // §5.7, inside flip: the collision or contact guard testing one flip
 };
 
 class GrowthObserver {

@@ -58,7 +58,7 @@ struct GrowthParams {
     double exposure_full_shade = 32.0; // growth.exposure_full_shade: shadow that makes a vertex dark
     int signal_diffusion = 0;          // growth.signal_diffusion: iterations on channel 7 (0: off)
     double signal_rate = 0.5;          // growth.signal_rate: D of each iteration
-    double contact_distance = 0.1;  // growth.contact_distance, collisions "touch" only (§5.7.1)
+    double contact_distance = 0.2;  // growth.contact_distance, collisions "touch" only (§5.7.1)
 };
 
 // Read a section; problems are added to reader.issues(), defaults fill gaps.

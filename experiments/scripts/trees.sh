@@ -1,24 +1,27 @@
 #!/usr/bin/env bash
-# The trees of experiments/2026-11-24-trees.md: configs/tree.json on several seeds,
-# each best checked by scripts/tree_shape.py, the bests drawn side by side;
-# then configs/tree_map.json (MAP-Elites over trunk_ratio x height) on the
-# first seed, its map of elites drawn.
+# The trees of experiments/2026-11-27-trees-with-limbs.md: configs/tree.json on
+# several seeds, each best's architecture and verdict by the skeleton
+# (experiments/scripts/trees/is_tree.py), the bests drawn side by side; the same
+# without the signals of algorithm.md §5.9 (exposure, diffusion) on the first
+# seed; then configs/tree_map.json (MAP-Elites over limbs x first_fork_height)
+# on the first seed, its map of elites drawn.
 #
 # usage: experiments/scripts/trees.sh [SEEDS...]     (default 1 2 3; results in out/trees/, OUT=... to change)
-#   MAP=0 skips the MAP-Elites run; THREADS (default 1) threads per run.
+#   MAP=0 skips the MAP-Elites run, PLAIN=0 the run without signals;
+#   THREADS (default 2) threads per run.
 #
 # A run whose history.csv is complete is not run again, and one that was
 # stopped is resumed (to the same bytes as an unbroken run), so the script
 # can be stopped and re-run; a run whose config changed is started again.
-# Cost: 6,100 births a run, 30-60 min of one core each (the collision guard
-# is most of it, docs/performance.md).
+# Cost: 6,100 births a run, about 4 minutes on 2 threads of the 2-core
+# development machine.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seeds=("$@")
 [ ${#seeds[@]} -gt 0 ] || seeds=(1 2 3)
 exe=build/morphogen
 out=${OUT:-out/trees}
-threads=${THREADS:-1}
+threads=${THREADS:-2}
 mkdir -p "$out"
 
 # The map must show the same plants the GA runs grow and score.
@@ -55,9 +58,24 @@ for s in "${seeds[@]}"; do
   last=$(ls "$out/tree-$s"/best/gen_*.obj | sort | tail -n 1)
   bests+=("$last")
 done
-python3 scripts/tree_shape.py "${bests[@]}" | tee "$out/tree_shape.csv"
+python3 experiments/scripts/trees/is_tree.py configs/tree.json "${bests[@]}" | tee "$out/is_tree.csv"
 "$exe" render "${bests[@]}" --columns "${#bests[@]}" -o "$out/trees.png"
 echo "contact sheet: $out/trees.png" >&2
+
+if [ "${PLAIN:-1}" != 0 ]; then
+  # The same config without the signals: what they are worth to evolution.
+  python3 - "$out/tree-plain.config.json" <<'PY'
+import json, sys
+config = json.load(open("configs/tree.json"))
+for key in ("exposure", "signal_diffusion"):
+    config["growth"].pop(key, None)
+json.dump(config, open(sys.argv[1], "w"), indent=1)
+PY
+  s=${seeds[0]}
+  run "$out/tree-plain.config.json" "$s" "$out/tree-plain-$s"
+  plain=$(ls "$out/tree-plain-$s"/best/gen_*.obj | sort | tail -n 1)
+  python3 experiments/scripts/trees/is_tree.py "$out/tree-plain.config.json" "$plain" | tee "$out/is_tree_plain.csv"
+fi
 
 if [ "${MAP:-1}" != 0 ]; then
   s=${seeds[0]}

@@ -211,6 +211,11 @@ TEST_CASE("schema.json defaults equal the reader's defaults", "[app][config][sch
          [&](const std::string& path, const json& key_schema, const json& value) {
              if (path.rfind("run.export_glb.", 0) == 0) compare(path, key_schema, value);
          });
+    // The contact rule's own key (contact_distance), resolved only with it.
+    walk(schema, schema, read_experiment_config(json{{"growth", {{"collisions", "touch"}}}}, "c").resolved, "",
+         [&](const std::string& path, const json& key_schema, const json& value) {
+             if (path != "growth.collisions") compare(path, key_schema, value);
+         });
     CHECK(compared > 40);
     // every section's default is {} (all of its keys default)
     for (const char* section : {"network", "growth", "fitness", "evolution", "run"})
@@ -237,6 +242,7 @@ TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]
                 document[section]["type"] = "tree";
             if (section == "fitness" && (key == "half_saturation" || key == "moment_cost")) document[section]["type"] = "plant";
             if (section == "growth" && key == "turn_rate") document[section]["mode"] = "branching";
+            if (section == "growth" && key == "contact_distance") document[section]["collisions"] = "touch";
             return document;
         };
         const bool integer = key_schema["type"] == "integer";
@@ -273,6 +279,7 @@ TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]
     walk(schema, schema,
          read_experiment_config(json{{"growth", {{"mode", "branching"}}}, {"fitness", {{"type", "tree"}}}}, "t").resolved,
          "", probe);
+    walk(schema, schema, read_experiment_config(json{{"growth", {{"collisions", "touch"}}}}, "c").resolved, "", probe);
     CHECK(probed > 25);
 }
 

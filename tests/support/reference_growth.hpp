@@ -7,6 +7,7 @@
 #include "growth/network.hpp"
 #include "growth/seeds.hpp"
 #include "mesh/face_pair.hpp"
+#include "mesh/fan_certificate.hpp"
 
 #include <algorithm>
 #include <array>
@@ -129,40 +130,65 @@ struct ReferenceGrowth {
         const Vec3 n = (b - a).cross(c - a);
         return (b - a).cross(q - a).dot(n) >= 0 && (c - b).cross(q - b).dot(n) >= 0 && (a - c).cross(q - c).dot(n) >= 0;
     }
-    // Near by §5.7.1's measure (within r; for a face of the ring, within r of
-    // its plane with the projection inside): the corners of the nearest
-    // point, 0 if not near.
-    static unsigned contact_near(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c, double r, bool ring) {
+    // Near by §5.7.1's measure (within r): the corners of the nearest point,
+    // 0 if not near.
+    static unsigned contact_near(const Vec3& q, const Vec3& a, const Vec3& b, const Vec3& c, double r) {
         const Nearest nearest = nearest_on_triangle(q, a, b, c);
-        if (!(nearest.distance < r)) return 0;
-        if (ring && !(nearest.corners == 0b111 && (b - a).cross(c - a).norm() > 0)) return 0;
-        return nearest.corners;
+        return nearest.distance < r ? nearest.corners : 0;
     }
 
+    // §5.7.1: contact pairs at the proposed positions, then tangled fans;
+    // the refused go back, the fans around them are checked once more; every
+    // refused vertex goes dormant.
     void settle_contacts(const std::vector<Vec3>& before, const std::vector<std::set<int>>& nb, double r) {
         const int V = static_cast<int>(x.size());
         if (active.empty() && touched.empty()) touched.assign(V, 0);
-        const auto moved = [&](int i) { return x[i] != before[i]; };
+        std::vector<bool> moving(V);
+        for (int i = 0; i < V; ++i) moving[i] = x[i] != before[i];
         std::set<int> refuse;
         for (int v = 0; v < V; ++v)
             for (const Face& f : faces) {
                 const auto [a, b, c] = f;
                 if (v == a || v == b || v == c) continue;
-                if (!moved(v) && !moved(a) && !moved(b) && !moved(c)) continue;
-                const bool ring = nb[v].count(a) || nb[v].count(b) || nb[v].count(c);
-                unsigned corners = contact_near(x[v], x[a], x[b], x[c], r, ring);
+                if (!moving[v] && !moving[a] && !moving[b] && !moving[c]) continue;
+                unsigned corners = contact_near(x[v], x[a], x[b], x[c], r);
                 const double s0 = (before[b] - before[a]).cross(before[c] - before[a]).dot(before[v] - before[a]);
                 const double s1 = (x[b] - x[a]).cross(x[c] - x[a]).dot(x[v] - x[a]);
                 if (corners == 0 && ((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0))) {
                     const double t = s0 / (s0 - s1);
                     const auto at = [&](int u) { return Vec3(before[u] + t * (x[u] - before[u])); };
-                    corners = contact_near(at(v), at(a), at(b), at(c), r, ring);
+                    corners = contact_near(at(v), at(a), at(b), at(c), r);
                 }
                 if (corners == 0) continue;
-                if (moved(v)) refuse.insert(v);
+                if (moving[v]) refuse.insert(v);
                 for (int k = 0; k < 3; ++k)
-                    if ((corners >> k & 1U) != 0 && moved(f[k])) refuse.insert(f[k]);
+                    if ((corners >> k & 1U) != 0 && moving[f[k]]) refuse.insert(f[k]);
             }
+        // A fan not certified at the positions now: its moving vertices stay.
+        const auto refuse_tangled = [&](const std::set<int>& check) {
+            const TriMesh mesh = TriMesh::from_arrays({x, faces}, "reference");
+            std::vector<Vec3> spokes;
+            std::set<int> more;
+            for (const int v : check) {
+                if (fan_certified(mesh, v, spokes)) continue;
+                if (moving[v]) more.insert(v);
+                for (const int u : nb[v])
+                    if (moving[u]) more.insert(u);
+            }
+            refuse.insert(more.begin(), more.end());
+        };
+        std::set<int> changed_fans;
+        for (int v = 0; v < V; ++v)
+            if (moving[v] || std::any_of(nb[v].begin(), nb[v].end(), [&](int u) { return moving[u]; }))
+                changed_fans.insert(v);
+        refuse_tangled(changed_fans);
+        std::set<int> around_refused;
+        for (const int u : refuse) {
+            x[u] = before[u];
+            around_refused.insert(u);
+            around_refused.insert(nb[u].begin(), nb[u].end());
+        }
+        refuse_tangled(around_refused);
         for (const int u : refuse) {
             x[u] = before[u];
             if (!active.empty()) active[u] = 0;
