@@ -17,7 +17,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <ostream>
 #include <nlohmann/json.hpp>
 
@@ -31,11 +30,13 @@ double diagonal(MeshView mesh) {
     return (hi - lo).norm();
 }
 
-// configs/tree.json's network and growth, with collisions allowed.
+// Branching growth at tree sizes (150 steps, at most 1,000 vertices), with
+// collisions allowed: fixed here, so that the counted figures do not move
+// when configs/tree.json does.
 GenomeGrower tree_grower() {
-    std::ifstream file(std::string(MORPHOGEN_SOURCE_DIR) + "/configs/tree.json");
-    nlohmann::json config = nlohmann::json::parse(file);
-    config["growth"]["collisions"] = "allow";
+    nlohmann::json config = nlohmann::json::parse(
+        R"({"network": {"outputs": 15, "hidden": [30]},
+            "growth": {"steps": 150, "max_vertices": 1000, "mode": "branching", "collisions": "allow"}})");
     ConfigIssues issues;
     ObjectReader network(&config["network"], "network", issues);
     ObjectReader growth(&config["growth"], "growth", issues);
