@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <thread>
+
 using namespace morphogen;
 using namespace morphogen::testing;
 
@@ -221,5 +223,42 @@ TEST_CASE("touch: a refused vertex stays where it was and goes dormant", "[conta
             }
         }
         CHECK(refused > 0);
+    }
+}
+
+TEST_CASE("touch: a grown mesh depends on the genome and the parameters alone", "[contact]") {
+    // Growing is per genome (one thread each): the same genome gives the same
+    // bytes with a fresh workspace, with one that grew other genomes first,
+    // and on two threads at once.
+    for (const GrowthMode mode : {GrowthMode::paper, GrowthMode::branching}) {
+        GrowthParams params;
+        params.steps = 80;
+        params.mode = mode;
+        params.collisions = Collisions::touch;
+        const Seed seed = make_seed("icosahedron", 1.0);
+        const auto grow = [&](std::uint64_t g, GrowthWorkspace& workspace) {
+            const Network network(random_test_genome({45, 30, 15}, g));
+            return Grower(network, params).grow(seed, workspace);
+        };
+        const auto same = [](const GrowthState& a, const GrowthState& b) {
+            return a.mesh.faces() == b.mesh.faces() && a.mesh.positions() == b.mesh.positions() &&
+                   a.active == b.active && a.touched == b.touched;
+        };
+        for (std::uint64_t g = 1; g <= 4; ++g) {
+            GrowthWorkspace fresh, used;
+            const GrowthState alone = grow(g, fresh);
+            grow(g + 100, used);
+            CHECK(same(alone, grow(g, used)));
+            GrowthState threaded[2];
+            std::thread other([&] {
+                GrowthWorkspace workspace;
+                threaded[1] = grow(g, workspace);
+            });
+            GrowthWorkspace workspace;
+            threaded[0] = grow(g, workspace);
+            other.join();
+            CHECK(same(alone, threaded[0]));
+            CHECK(same(alone, threaded[1]));
+        }
     }
 }
