@@ -75,6 +75,15 @@ std::vector<int> refused_of(TriMesh mesh, const std::vector<std::pair<int, Vec3>
     return touching;
 }
 
+// Growth with "touch" for `steps` steps in `mode`, defaults otherwise.
+GrowthParams touch_params(GrowthMode mode, int steps) {
+    GrowthParams params;
+    params.steps = steps;
+    params.mode = mode;
+    params.collisions = Collisions::touch;
+    return params;
+}
+
 }  // namespace
 
 TEST_CASE("the contact measure: distance to a triangle, and the corners of the nearest point", "[contact]") {
@@ -174,9 +183,7 @@ TEST_CASE("growth.contact_distance: read with touch, refused otherwise and out o
 }
 
 TEST_CASE("touch: the engine grows what the reference implementation grows, paper mode", "[contact][reference]") {
-    GrowthParams params;
-    params.steps = 40;
-    params.collisions = Collisions::touch;
+    GrowthParams params = touch_params(GrowthMode::paper, 40);
     params.contact_distance = GENERATE(0.1, 0.3);
     const auto grown = require_same_as_reference(params, 300);
     // The rule acted: some vertex stopped for good.
@@ -186,20 +193,14 @@ TEST_CASE("touch: the engine grows what the reference implementation grows, pape
 }
 
 TEST_CASE("touch: the engine grows what the reference implementation grows, branching mode", "[contact][reference]") {
-    GrowthParams params;
-    params.steps = 40;
-    params.mode = GrowthMode::branching;
-    params.collisions = Collisions::touch;
+    GrowthParams params = touch_params(GrowthMode::branching, 40);
     params.contact_distance = GENERATE(0.1, 0.3);
     require_same_as_reference(params, 400);
 }
 
 TEST_CASE("touch: a refused vertex stays where it was and goes dormant", "[contact]") {
     for (const GrowthMode mode : {GrowthMode::paper, GrowthMode::branching}) {
-        GrowthParams params;
-        params.steps = 60;
-        params.mode = mode;
-        params.collisions = Collisions::touch;
+        const GrowthParams params = touch_params(mode, 60);
         std::uint64_t refused = 0;
         for (std::uint64_t g = 1; g <= 6; ++g) {
             const Network network(random_test_genome({45, 30, 15}, g));
@@ -231,10 +232,7 @@ TEST_CASE("touch: a grown mesh depends on the genome and the parameters alone", 
     // bytes with a fresh workspace, with one that grew other genomes first,
     // and on two threads at once.
     for (const GrowthMode mode : {GrowthMode::paper, GrowthMode::branching}) {
-        GrowthParams params;
-        params.steps = 80;
-        params.mode = mode;
-        params.collisions = Collisions::touch;
+        const GrowthParams params = touch_params(mode, 80);
         const Seed seed = make_seed("icosahedron", 1.0);
         const auto grow = [&](std::uint64_t g, GrowthWorkspace& workspace) {
             const Network network(random_test_genome({45, 30, 15}, g));
