@@ -9,6 +9,8 @@
 
 #include <catch2/catch.hpp>
 
+#include <thread>
+
 using namespace morphogen;
 using namespace morphogen::testing;
 
@@ -71,6 +73,15 @@ std::vector<int> refused_of(TriMesh mesh, const std::vector<std::pair<int, Vec3>
         CHECK(mesh.position(v) == (refused ? before[v] : proposed[v]));
     }
     return touching;
+}
+
+// Growth with "touch" for `steps` steps in `mode`, defaults otherwise.
+GrowthParams touch_params(GrowthMode mode, int steps) {
+    GrowthParams params;
+    params.steps = steps;
+    params.mode = mode;
+    params.collisions = Collisions::touch;
+    return params;
 }
 
 }  // namespace
@@ -172,9 +183,7 @@ TEST_CASE("growth.contact_distance: read with touch, refused otherwise and out o
 }
 
 TEST_CASE("touch: the engine grows what the reference implementation grows, paper mode", "[contact][reference]") {
-    GrowthParams params;
-    params.steps = 40;
-    params.collisions = Collisions::touch;
+    GrowthParams params = touch_params(GrowthMode::paper, 40);
     params.contact_distance = GENERATE(0.1, 0.3);
     const auto grown = require_same_as_reference(params, 300);
     // The rule acted: some vertex stopped for good.
@@ -184,20 +193,14 @@ TEST_CASE("touch: the engine grows what the reference implementation grows, pape
 }
 
 TEST_CASE("touch: the engine grows what the reference implementation grows, branching mode", "[contact][reference]") {
-    GrowthParams params;
-    params.steps = 40;
-    params.mode = GrowthMode::branching;
-    params.collisions = Collisions::touch;
+    GrowthParams params = touch_params(GrowthMode::branching, 40);
     params.contact_distance = GENERATE(0.1, 0.3);
     require_same_as_reference(params, 400);
 }
 
 TEST_CASE("touch: a refused vertex stays where it was and goes dormant", "[contact]") {
     for (const GrowthMode mode : {GrowthMode::paper, GrowthMode::branching}) {
-        GrowthParams params;
-        params.steps = 60;
-        params.mode = mode;
-        params.collisions = Collisions::touch;
+        const GrowthParams params = touch_params(mode, 60);
         std::uint64_t refused = 0;
         for (std::uint64_t g = 1; g <= 6; ++g) {
             const Network network(random_test_genome({45, 30, 15}, g));
@@ -221,5 +224,39 @@ TEST_CASE("touch: a refused vertex stays where it was and goes dormant", "[conta
             }
         }
         CHECK(refused > 0);
+    }
+}
+
+TEST_CASE("touch: a grown mesh depends on the genome and the parameters alone", "[contact]") {
+    // Growing is per genome (one thread each): the same genome gives the same
+    // bytes with a fresh workspace, with one that grew other genomes first,
+    // and on two threads at once.
+    for (const GrowthMode mode : {GrowthMode::paper, GrowthMode::branching}) {
+        const GrowthParams params = touch_params(mode, 80);
+        const Seed seed = make_seed("icosahedron", 1.0);
+        const auto grow = [&](std::uint64_t g, GrowthWorkspace& workspace) {
+            const Network network(random_test_genome({45, 30, 15}, g));
+            return Grower(network, params).grow(seed, workspace);
+        };
+        const auto same = [](const GrowthState& a, const GrowthState& b) {
+            return a.mesh.faces() == b.mesh.faces() && a.mesh.positions() == b.mesh.positions() &&
+                   a.active == b.active && a.touched == b.touched;
+        };
+        for (std::uint64_t g = 1; g <= 4; ++g) {
+            GrowthWorkspace fresh, used;
+            const GrowthState alone = grow(g, fresh);
+            grow(g + 100, used);
+            CHECK(same(alone, grow(g, used)));
+            GrowthState threaded[2];
+            std::thread other([&] {
+                GrowthWorkspace workspace;
+                threaded[1] = grow(g, workspace);
+            });
+            GrowthWorkspace workspace;
+            threaded[0] = grow(g, workspace);
+            other.join();
+            CHECK(same(alone, threaded[0]));
+            CHECK(same(alone, threaded[1]));
+        }
     }
 }
