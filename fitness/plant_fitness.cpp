@@ -57,7 +57,10 @@ PlantScore plant_score(MeshView mesh, const PlantFitnessParams& params) {
     for (const Vec3& p : mesh.positions) zmin = std::min(zmin, p.z());
     s.rooted = zmin <= params.root_height;
     if (!s.rooted) return s;
-    const Architecture architecture = measure_architecture(mesh, params.architecture);
+    // Only the tips count here: skip the convex hull (solidity) on every birth.
+    ArchitectureParams skeleton_only = params.architecture;
+    skeleton_only.with_solidity = false;
+    const Architecture architecture = measure_architecture(mesh, skeleton_only);
     s.tips = architecture.tips;
     for (const Vec3& tip : architecture.tip_points) s.reproduction += std::max(0.0, tip.z() - zmin);
     s.moment = bending_moment(mesh, foot_axis(mesh, zmin, params.root_height));
