@@ -10,7 +10,9 @@ packages=(
   libtinygltf-dev libstb-dev catch2
   libjs-three chromium python3   # report: three.js copied into each report; its browser tests
   libopenmpi-dev openmpi-bin
-  nodejs       # the Khronos glTF validator (tools/gltf) for the GLB tests
+  nodejs       # the Khronos glTF validator (tools/gltf) and playwright-core (tools/browser)
+  libcpp-httplib-dev   # morphogen breed's local HTTP server
+  blender      # the species pack's import check (headless)
 )
 
 missing=()
@@ -19,21 +21,25 @@ for p in "${packages[@]}"; do
 done
 # Debian's nodejs comes without npm; other builds of nodejs bundle it.
 command -v npm >/dev/null || missing+=(npm)
-install_validator() {
-  # tools/gltf/package-lock.json pins it; npm ci only when it is not there yet.
-  local tools
-  tools="$(cd "$(dirname "$0")/.." && pwd)/tools/gltf"
-  if [ -d "$tools/node_modules/gltf-validator" ]; then
-    echo "setup: glTF validator present"
+install_node_tool() {
+  # tools/NAME/package-lock.json pins it; npm ci only when it is not there yet.
+  local name=$1 module=$2 tools
+  tools="$(cd "$(dirname "$0")/.." && pwd)/tools/$name"
+  if [ -d "$tools/node_modules/$module" ]; then
+    echo "setup: $module present"
   else
-    echo "setup: installing the glTF validator in tools/gltf"
+    echo "setup: installing $module in tools/$name"
     (cd "$tools" && npm ci --no-audit --no-fund --loglevel=error)
   fi
+}
+install_node_tools() {
+  install_node_tool gltf gltf-validator        # the Khronos glTF validator
+  install_node_tool browser playwright-core    # drives Debian's Chromium in browser tests
 }
 
 if [ ${#missing[@]} -eq 0 ]; then
   echo "setup: all packages present"
-  install_validator
+  install_node_tools
   exit 0
 fi
 
@@ -46,4 +52,4 @@ echo "setup: installing ${missing[*]}"
 export DEBIAN_FRONTEND=noninteractive
 "${sudo[@]}" apt-get update -qq
 "${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
-install_validator
+install_node_tools
