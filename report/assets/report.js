@@ -332,6 +332,13 @@
     self.wind.windFlutter.value = 0.01 * height;
     self.setLod(Math.min(self.lod, Math.max(0, levels.length - 1)));
   };
+  // The canvas rows (CSS pixels from its top) of the plant's top and foot.
+  Viewer.prototype.plantRows = function () {
+    var box = this.box, centre = box.getCenter(new THREE.Vector3()), camera = this.camera, h = this.canvas.clientHeight;
+    camera.updateMatrixWorld();
+    function row(y) { return (1 - new THREE.Vector3(centre.x, y, centre.z).project(camera).y) / 2 * h; }
+    return { top: row(box.max.y), foot: row(box.min.y) };
+  };
   Viewer.prototype.setLod = function (i) {
     this.lod = i;
     this.levels.forEach(function (l, j) { l.object.visible = j === i; });
@@ -386,6 +393,7 @@
           self.mixer.update(0);
         }
         self.hideScaledAway();
+        self.box = box;
         self.prepare(gltf.scene, size.y);
         resolve(gltf);
       }, function (error) { reject(error instanceof Error ? error : new Error(String(error && error.message || error))); });
@@ -414,6 +422,7 @@
     status.lod = viewer.lod;
     status.lodTriangles = levels.map(function (l) { return l.triangles; });
     status.triangles = triangles;
+    status.plantRows = viewer.plantRows();
   }
   function showInViewer(key, src, label) {
     if (!viewer) return Promise.resolve();
