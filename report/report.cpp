@@ -10,6 +10,7 @@
 #include "report/report_animation.hpp"
 #include "report/report_assets.hpp"
 #include "report/report_data.hpp"
+#include "report/report_plants.hpp"
 #include "run/checkpoint.hpp"
 #include "run/elites_search.hpp"
 #include "run/experiment_config.hpp"
@@ -115,9 +116,9 @@ struct Reporter {
 };
 
 // The archive for the heatmap; the r.options.max_elites fittest elites grown
-// into elites/cell_NNNN.js for the viewer.
+// into elites/cell_NNNN.js for the viewer (engine-ready: wind and levels).
 template <typename Growth>
-json elites_json(Reporter& r, const Archive& archive, Growth& growth) {
+json elites_json(Reporter& r, const ExperimentConfig& config, const Archive& archive, Growth& growth) {
     std::vector<std::pair<std::uint64_t, const Individual*>> by_fitness;  // cell, elite
     for (const auto& [cell, elite] : archive.elites()) by_fitness.emplace_back(cell, &elite);
     std::stable_sort(by_fitness.begin(), by_fitness.end(),
@@ -140,11 +141,12 @@ json elites_json(Reporter& r, const Archive& archive, Growth& growth) {
     for (std::size_t i = 0; p && i < grow_count; ++i) {
         const auto [cell, elite] = by_fitness[i];
         const std::string key = "cell_" + four_digits(cell);
-        const GrowthState elite_grown = p->grow(elite->params);
-        write_out(r.out / "elites" / (key + ".js"),
-                  mesh_script(key, encode_mesh(elite_grown.mesh.view(), MeshFormat::glb)));
+        const ReportPlant plant = grow_report_plant(config, *p, *elite, cell);
+        if (plant.why_plain) r.note("elite of cell " + std::to_string(cell) + ": no wind or levels: " + *plant.why_plain);
+        write_out(r.out / "elites" / (key + ".js"), mesh_script(key, plant.glb));
         cells[index.at(cell)]["script"] = "elites/" + key + ".js";
         cells[index.at(cell)]["key"] = key;
+        cells[index.at(cell)]["lods"] = plant.lods;
         ++grown;
     }
     r.summary.elites = grown;
@@ -376,10 +378,12 @@ void best_json(Reporter& r, const RunInputs& in, Pictures& pictures, LazyGrowth&
               {"script", nullptr},
               {"architecture", nullptr}};
     if (const GenomeGrower* p = growth()) {
-        const GrowthState grown = p->grow(best->params);
-        write_out(r.out / "best.js", mesh_script("best", encode_mesh(grown.mesh.view(), MeshFormat::glb)));
+        const ReportPlant plant = grow_report_plant(in.config, *p, *best, std::nullopt);
+        if (plant.why_plain) r.note("the final best has no wind or levels: " + *plant.why_plain);
+        write_out(r.out / "best.js", mesh_script("best", plant.glb));
         b["script"] = "best.js";
-        b["architecture"] = architecture_json(measure_architecture(grown.mesh.view()));
+        b["lods"] = plant.lods;
+        b["architecture"] = architecture_json(measure_architecture(plant.grown.mesh.view()));
     }
     d["best"] = std::move(b);
     if (best->id < in.lineage.size()) {
@@ -435,7 +439,7 @@ void write_report_files(Reporter& r, const fs::path& run_dir, const RunInputs& i
     best_json(r, in, pictures, growth);
     sheet_json(r, in, pictures);
     const MapElitesState* elites = elites_state(*in.state.search);
-    r.data["elites"] = elites != nullptr ? elites_json(r, elites->archive, growth) : json();
+    r.data["elites"] = elites != nullptr ? elites_json(r, in.config, elites->archive, growth) : json();
     const bool have_three = copy_three(r, r.out / "lib");
     r.data["three"] = have_three;
     r.data["notes"] = r.summary.notes;

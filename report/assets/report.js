@@ -255,6 +255,13 @@
     this.playing = true;
     this.content = null;
     this.ground = null;
+    this.levels = [];  // {name, object, triangles} of the shown plant's LOD nodes, LOD0 first
+    this.lod = 0;
+    this.hasWind = false;
+    // Shared by every swaying material (docs/file-formats.md, "Wind data").
+    this.wind = { windTime: { value: 0 }, windOn: { value: 0 }, windAmp: { value: 0 }, windFlutter: { value: 0 },
+      windDir: { value: new THREE.Vector3(1, 0, 0) } };
+    this.swaying = false;
     var self = this;
     (function loop() {
       requestAnimationFrame(loop);
@@ -264,10 +271,82 @@
         self.hideScaledAway();
         if (self.onTime) self.onTime(self.mixer.time);
       }
+      if (self.swaying) self.wind.windTime.value += dt;
       self.controls.update();
       self.renderer.render(self.scene, self.camera);
+      if (self.onFrame) self.onFrame();
     })();
   }
+
+  // The sway of docs/file-formats.md ("Wind data") in the vertex shader:
+  //   p' = p + A·bend·(0.5 + 0.5·sin(ω t))·W + F·flutter·(1 − stiffness)·sin(ω_f t + 2π·phase)·n
+  // with ω = 2π·0.3 s⁻¹, ω_f = 2π·2 s⁻¹; GLTFLoader names the glTF attribute
+  // _WIND "_wind" (unknown attributes are lower-cased). windOn 0 leaves the
+  // mesh at rest.
+  var SWAY_DECLARATIONS = [
+    'attribute vec4 _wind;',
+    'uniform float windTime;', 'uniform float windOn;', 'uniform float windAmp;', 'uniform float windFlutter;',
+    'uniform vec3 windDir;'].join('\n');
+  var SWAY_VERTEX = [
+    'transformed += windOn * windAmp * _wind.x * (0.5 + 0.5 * sin(6.2831853 * 0.3 * windTime)) * windDir;',
+    'transformed += windOn * windFlutter * _wind.y * (1.0 - _wind.w) *',
+    '  sin(6.2831853 * 2.0 * windTime + 6.2831853 * _wind.z) * normal;'].join('\n');
+  function swayingMaterial(material, uniforms) {
+    var m = material.clone();
+    m.onBeforeCompile = function (shader) {
+      for (var k in uniforms) shader.uniforms[k] = uniforms[k];
+      shader.vertexShader = shader.vertexShader
+        .replace('#include <common>', '#include <common>\n' + SWAY_DECLARATIONS)
+        .replace('#include <begin_vertex>', '#include <begin_vertex>\n' + SWAY_VERTEX);
+    };
+    return m;
+  }
+  function triangleCount(object) {
+    var n = 0;
+    object.traverse(function (o) {
+      if (!o.isMesh) return;
+      var g = o.geometry;
+      n += (g.index ? g.index.count : g.attributes.position.count) / 3;
+    });
+    return n;
+  }
+  // The shown plant's levels of detail (nodes named plant_<id>_LOD<i>) and
+  // its wind data: meshes with a _WIND attribute get the swaying material.
+  Viewer.prototype.prepare = function (root, height) {
+    var self = this, levels = [];
+    self.hasWind = false;
+    root.traverse(function (o) {
+      var m = /_LOD(\d+)$/.exec(o.name || '');
+      if (m) levels.push({ index: +m[1], name: o.name, object: o, triangles: triangleCount(o) });
+      if (o.isMesh && o.geometry.attributes._wind) {
+        o.material = swayingMaterial(o.material, self.wind);
+        o.frustumCulled = false;  // the sway leaves the rest pose's bounds
+        self.hasWind = true;
+      }
+    });
+    levels.sort(function (a, b) { return a.index - b.index; });
+    self.levels = levels;
+    // What the viewer uses for A and F (metres at the farthest tip): 8 % and
+    // 1 % of the plant's height, so every plant sways visibly at any size.
+    self.wind.windAmp.value = 0.08 * height;
+    self.wind.windFlutter.value = 0.01 * height;
+    self.setLod(Math.min(self.lod, Math.max(0, levels.length - 1)));
+  };
+  // The canvas rows (CSS pixels from its top) of the plant's top and foot.
+  Viewer.prototype.plantRows = function () {
+    var box = this.box, centre = box.getCenter(new THREE.Vector3()), camera = this.camera, h = this.canvas.clientHeight;
+    camera.updateMatrixWorld();
+    function row(y) { return (1 - new THREE.Vector3(centre.x, y, centre.z).project(camera).y) / 2 * h; }
+    return { top: row(box.max.y), foot: row(box.min.y) };
+  };
+  Viewer.prototype.setLod = function (i) {
+    this.lod = i;
+    this.levels.forEach(function (l, j) { l.object.visible = j === i; });
+  };
+  Viewer.prototype.setSway = function (on) {
+    this.swaying = on;
+    this.wind.windOn.value = on ? 1 : 0;
+  };
   // Frames of a growth animation are hidden by scale 0 (STEP keys); three.js
   // cannot invert a zero scale's normal matrix (a console warning each
   // frame), so such nodes are made invisible instead of drawn.
@@ -314,6 +393,8 @@
           self.mixer.update(0);
         }
         self.hideScaledAway();
+        self.box = box;
+        self.prepare(gltf.scene, size.y);
         resolve(gltf);
       }, function (error) { reject(error instanceof Error ? error : new Error(String(error && error.message || error))); });
     });
@@ -322,11 +403,33 @@
   function message(id, text) { var m = $(id); m.textContent = text; m.hidden = !text; }
 
   var viewer = null;
+  // The sway toggle and the level selector follow what the shown plant has.
+  function plantControls() {
+    var sway = $('sway'), lod = $('lod'), levels = viewer.levels;
+    sway.disabled = !viewer.hasWind;
+    viewer.setSway(sway.checked && viewer.hasWind);
+    while (lod.firstChild) lod.removeChild(lod.firstChild);
+    (levels.length ? levels : [{ index: 0 }]).forEach(function (l, i) {
+      lod.appendChild(el('option', { value: i }, 'LOD' + l.index));
+    });
+    lod.disabled = levels.length < 2;
+    lod.value = viewer.lod;
+    var triangles = levels.length ? levels[viewer.lod].triangles : triangleCount(viewer.content);
+    $('lod-label').textContent = fmt(triangles) + ' triangles' + (levels.length ? ' (of ' + fmt(levels[0].triangles) + ' at LOD0)' : '') +
+      (viewer.hasWind ? '' : ' · no wind data');
+    status.sway = viewer.hasWind ? (viewer.swaying ? 'on' : 'off') : 'none';
+    status.lods = levels.length;
+    status.lod = viewer.lod;
+    status.lodTriangles = levels.map(function (l) { return l.triangles; });
+    status.triangles = triangles;
+    status.plantRows = viewer.plantRows();
+  }
   function showInViewer(key, src, label) {
     if (!viewer) return Promise.resolve();
     $('gen-label').textContent = label + ' (loading)';
     return loadMesh(key, src).then(function (buffer) { return viewer.show(buffer); }).then(function () {
       $('gen-label').textContent = label;
+      plantControls();
       status.viewer = 'shown';
       status.shown = key;
     }).catch(function (e) {
@@ -350,6 +453,15 @@
       return;
     }
     viewer = new Viewer($('viewer'));
+    viewer.onFrame = function () {  // for people reading the status and for the browser tests
+      status.drawnTriangles = viewer.renderer.info.render.triangles;
+      status.swayTime = viewer.wind.windTime.value;
+    };
+    $('sway').addEventListener('change', function () { plantControls(); });
+    $('lod').addEventListener('change', function () {
+      viewer.setLod(+$('lod').value);
+      plantControls();
+    });
     var slider = $('gen-slider');
     slider.max = Math.max(0, R.meshes.length - 1);
     slider.disabled = R.meshes.length < 2;

@@ -6,6 +6,7 @@
 #include "base/errors.hpp"
 #include "report/report.hpp"
 #include "report/report_data.hpp"
+#include "report/report_plants.hpp"
 #include "run/run_directory.hpp"
 #include "tests/app/evolve_test_support.hpp"
 
@@ -55,6 +56,27 @@ std::map<std::string, std::string> snapshot(const fs::path& dir) {
         if (entry.is_regular_file() && entry.path().string().find("/report/") == std::string::npos)
             files[fs::relative(entry.path(), dir).string()] = read_text(entry.path());
     return files;
+}
+
+// The glTF JSON of a mesh script the report wrote: morphogenMesh("key","BASE64");
+nlohmann::json script_gltf(const fs::path& script) {
+    const std::string text = read_text(script);
+    const std::size_t from = text.find(",\"") + 2, to = text.rfind("\")");
+    REQUIRE(from != std::string::npos);
+    REQUIRE(to > from);
+    static const std::string alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string glb;
+    unsigned bits = 0;
+    int count = 0;
+    for (std::size_t i = from; i < to && text[i] != '='; ++i) {
+        bits = (bits << 6) | static_cast<unsigned>(alphabet.find(text[i]));
+        if ((count += 6) >= 8) glb += static_cast<char>((bits >> (count -= 8)) & 0xff);
+    }
+    REQUIRE(glb.rfind("glTF", 0) == 0);  // GLB header, then the JSON chunk: length, "JSON", text
+    std::uint32_t length = 0;
+    for (int i = 0; i < 4; ++i) length |= static_cast<std::uint32_t>(static_cast<unsigned char>(glb[12 + i])) << (8 * i);
+    REQUIRE(glb.compare(16, 4, "JSON") == 0);
+    return nlohmann::json::parse(glb.substr(20, length));
 }
 
 }  // namespace
@@ -218,6 +240,54 @@ TEST_CASE("a MAP-Elites run: the archive's cells, the fittest elites grown for t
     REQUIRE(grown.size() == 2);
     for (double f : not_grown) CHECK(f <= std::min(grown[0], grown[1]));  // the fittest were grown
     CHECK(d["history"]["columns"].contains("coverage"));
+}
+
+TEST_CASE("the viewer's grown plants are engine-ready: named for their birth, wind data, levels halving",
+          "[app][report]") {
+    TempDir tmp("report_engine");
+    const fs::path run = make_run(tmp, R"({"network": {"outputs": 4, "hidden": [5]},
+ "growth": {"steps": 20, "max_vertices": 300},
+ "fitness": {"type": "canopy", "height": 1, "cell": 0.1},
+ "evolution": {"algorithm": "map_elites", "population": 12, "batch": 4, "mutation_rate": 0.2},
+ "descriptors": [{"measure": "height", "min": 0, "max": 3, "bins": 6}, {"measure": "footprint", "min": 0, "max": 10, "bins": 5}],
+ "archive": {"type": "grid", "qd_offset": -1},
+ "run": {"seed": 3, "generations": 3, "export_every": 1}})");
+    const CliResult result = run_morphogen("report " + q(run) + " --elites 3");
+    INFO(result.output);
+    REQUIRE(result.code == 0);
+    const nlohmann::json d = report_data(run / "report");
+    std::vector<std::pair<nlohmann::json, std::string>> plants = {{d["best"], "best.js"}};  // entry, script
+    for (const auto& c : d["elites"]["cells"])
+        if (!c["script"].is_null()) plants.emplace_back(c, c["script"].get<std::string>());
+    REQUIRE(plants.size() == 4);
+    for (const auto& [entry, script] : plants) {
+        INFO(script);
+        const nlohmann::json gltf = script_gltf(run / "report" / script);
+        const std::string name = "plant_" + std::to_string(entry["id"].get<std::uint64_t>());
+        const nlohmann::json& root = gltf["nodes"][0];
+        CHECK(root["name"] == name);
+        CHECK(root["extras"]["birth_id"] == entry["id"]);
+        CHECK(root["extras"]["wind"] == "_WIND");
+        if (entry.contains("cell")) CHECK(root["extras"]["cell"] == entry["cell"]);
+        const int lods = entry["lods"];
+        REQUIRE(lods >= 1);  // these plants have at least 8 triangles
+        REQUIRE(root["children"].size() == static_cast<std::size_t>(lods));
+        const nlohmann::json& lod0 = gltf["nodes"][root["children"][0].get<int>()];
+        CHECK(lods == report_lod_count(lod0["extras"]["triangles"].get<std::size_t>()));
+        for (int i = 0; i < lods; ++i) {
+            const nlohmann::json& node = gltf["nodes"][root["children"][i].get<int>()];
+            CHECK(node["name"] == name + "_LOD" + std::to_string(i));
+            const nlohmann::json& primitive = gltf["meshes"][node["mesh"].get<int>()]["primitives"][0];
+            CHECK(primitive["attributes"].contains("_WIND"));
+            CHECK_FALSE(primitive["attributes"].contains("COLOR_0"));
+            if (i > 0) {  // about half the triangles of the level before
+                const double ratio = node["extras"]["triangles"].get<double>() /
+                                     gltf["nodes"][root["children"][i - 1].get<int>()]["extras"]["triangles"].get<double>();
+                CHECK(ratio > 0.4);
+                CHECK(ratio < 0.6);
+            }
+        }
+    }
 }
 
 TEST_CASE("a CVT archive: cells without bins, drawn at their descriptors", "[app][report]") {

@@ -1,0 +1,40 @@
+#include "report/report_plants.hpp"
+
+#include "base/errors.hpp"
+#include "engine/birth_steps.hpp"
+#include "engine/plant_export.hpp"
+#include "engine/plant_lods.hpp"
+#include "io/mesh_io.hpp"
+#include "run/plant_exports.hpp"
+
+namespace morphogen {
+
+int report_lod_count(std::size_t faces) {
+    int lods = 0;
+    while (lods < kReportLods && faces >= kMinLodFaces << lods) ++lods;
+    return lods;
+}
+
+ReportPlant grow_report_plant(const ExperimentConfig& config, const GenomeGrower& grower,
+                              const Individual& individual, std::optional<std::uint64_t> cell) {
+    BirthSteps births(grower.seed().mesh.num_vertices());  // the wind data's flutter
+    GrowthWorkspace workspace;
+    const Network network(Genome{grower.layers(), individual.params});
+    ReportPlant plant{grower.grow(network, workspace, births.observer()), {}, 0, {}};
+    const MeshView mesh = plant.grown.mesh.view();
+    PlantExportOptions options;
+    options.wind = true;
+    options.lods = report_lod_count(static_cast<std::size_t>(mesh.faces.size()));
+    try {
+        plant.glb = plant_glb_bytes(GrownPlant{.mesh = mesh, .birth_steps = births.steps(), .steps = plant.grown.steps_done},
+                                    birth_record(config, individual, config.qd.measure_names(), cell), options,
+                                    "plant " + std::to_string(individual.id));
+        plant.lods = options.lods;
+    } catch (const MeshError& e) {
+        plant.glb = encode_mesh(mesh, MeshFormat::glb);
+        plant.why_plain = e.what();
+    }
+    return plant;
+}
+
+}  // namespace morphogen
