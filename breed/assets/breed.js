@@ -303,7 +303,7 @@ function showSearch(search) {
   const bar = $('search-progress');
   bar.max = Math.max(search.total, 1);
   bar.value = Math.min(search.done, bar.max);
-  $('search-text').textContent = `${search.done} / ${search.total} births` + (search.message ? ' · ' + search.message : '');
+  $('search-text').textContent = search.message || `${search.done} of ${search.total} births`;
   if (!search.running && search.message && lastSearchRunning) say(search.message, 'info');
   lastSearchRunning = search.running;
 }
