@@ -1,6 +1,6 @@
 // `morphogen gallery`: grow many random genomes in parallel (the paper's Figure 2).
 #include "app/commands.hpp"
-#include "app/mesh_stats.hpp"
+#include "fitness/mesh_stats.hpp"
 #include "app/resource_options.hpp"
 #include "base/errors.hpp"
 #include "evolution/worker_threads.hpp"

@@ -1,6 +1,6 @@
 // `morphogen grow`: grow one genome and write its mesh.
 #include "app/commands.hpp"
-#include "app/mesh_stats.hpp"
+#include "fitness/mesh_stats.hpp"
 #include "app/plant_export_options.hpp"
 #include "app/resource_options.hpp"
 #include "base/errors.hpp"

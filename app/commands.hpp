@@ -27,6 +27,7 @@ void add_validate_command(CLI::App& root, CommandRunner& selected);
 void add_score_command(CLI::App& root, CommandRunner& selected);
 void add_archive_command(CLI::App& root, CommandRunner& selected);
 void add_report_command(CLI::App& root, CommandRunner& selected);
+void add_breed_command(CLI::App& root, CommandRunner& selected);
 
 // What the commands' registrations share.
 

@@ -106,6 +106,7 @@ int main(int argc, char** argv) {
     add_score_command(app, selected);
     add_archive_command(app, selected);
     add_report_command(app, selected);
+    add_breed_command(app, selected);
     check_numeric_options(app);
 
     try {

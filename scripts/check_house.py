@@ -19,8 +19,9 @@ BELOW['engine'] = BELOW['growth'] | {'growth'}
 BELOW['run'] = BELOW['engine'] | {'engine', 'fitness', 'evolution'}
 BELOW['cluster'] = BELOW['run'] | {'run'}
 BELOW['report'] = BELOW['run'] | {'run'}
+BELOW['breed'] = BELOW['report'] | {'report'}  # morphogen breed: run/ and below, report/'s renderer
 BELOW['fuzz'] = BELOW['run'] | {'run'}
-BELOW['app'] = BELOW['run'] | {'run', 'cluster', 'report'}
+BELOW['app'] = BELOW['run'] | {'run', 'cluster', 'report', 'breed'}
 BELOW['bench'] = {'evolution'}  # benchmarks beside the product: link it, never linked by it
 SOURCE = ('.cpp', '.hpp', '.cpp.in')
 

@@ -1,4 +1,4 @@
-#include "app/mesh_stats.hpp"
+#include "fitness/mesh_stats.hpp"
 
 #include <algorithm>
 

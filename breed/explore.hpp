@@ -1,0 +1,83 @@
+#pragma once
+// "Explore around this one" (docs/breed.md): a short MAP-Elites search
+// (evolution/map_elites.hpp, docs/algorithm.md §9) seeded with the chosen
+// plants, whose most different good elites become the next grid.
+//
+// The archive starts holding only the seeds and the births start after
+// generation 0 (no random genomes), so every birth descends from the seeds.
+// Births are made and inserted one after another on the search's thread:
+// the elites after n births are a pure function of (seeds, seed, n), so a
+// replay that runs the recorded number of births gets the same grid.
+//
+// The pick: the elites whose fitness is at least the median elite fitness,
+// then farthest-point sampling over their descriptors (each scaled by its
+// range): the fittest first, then repeatedly the one farthest from all
+// picked so far (ties: the lower cell). Fewer good elites than cells: the
+// rest by fitness.
+#include "breed/plant_growth.hpp"
+#include "evolution/archive.hpp"
+#include "evolution/individual.hpp"
+#include "evolution/map_elites.hpp"
+
+#include <atomic>
+#include <cstdint>
+#include <vector>
+
+namespace morphogen {
+
+struct ExploreSettings {
+    std::vector<DescriptorRange> descriptors;  // the config's `descriptors`, or spread and slenderness
+    MapElitesParams params;                    // the config's mutation and crossover, default emitters
+};
+// The settings for a session's config.
+ExploreSettings explore_settings(const ExperimentConfig& config, int grid);
+inline constexpr int kMaxExploreBirths = 100000;
+
+struct ExploreSeed {
+    std::vector<double> params;
+    double fitness = 0.0;            // valid
+    std::vector<double> descriptors;  // measurable
+};
+
+struct ExploreResult {
+    std::vector<std::vector<double>> picked;  // at most `picks` genomes, most different first
+    std::uint64_t done = 0;                   // births made
+};
+
+class ExploreSearch {
+public:
+    // Throws std::invalid_argument if no seed, births < 1, or picks < 1.
+    ExploreSearch(const PlantGrowth& growth, const ExploreSettings& settings, std::vector<ExploreSeed> seeds,
+                  std::uint64_t seed, std::uint64_t births, std::size_t picks);
+
+    // Runs births until `births` are done or stop() is called (checked
+    // between births); returns the pick. Call once.
+    ExploreResult run();
+    void stop() { stop_ = true; }
+    std::uint64_t done() const { return done_; }
+    std::uint64_t total() const { return births_; }
+    std::size_t elites() const { return elites_; }
+    // Whether the search's thread has it (the session sets these around run()).
+    bool running() const { return running_; }
+    void set_running() { running_ = true; }
+    void set_finished() { running_ = false; }
+
+private:
+    class Scorer;
+    const PlantGrowth& growth_;
+    ExploreSettings settings_;
+    std::vector<ExploreSeed> seeds_;
+    std::uint64_t seed_;
+    std::uint64_t births_;
+    std::size_t picks_;
+    std::atomic<bool> stop_{false};
+    std::atomic<std::uint64_t> done_{0};
+    std::atomic<std::size_t> elites_{0};
+    std::atomic<bool> running_{false};
+};
+
+// The pick described above, from `elites`, at most `count` of them (their indices).
+std::vector<std::size_t> pick_different_good(const std::vector<const Individual*>& elites,
+                                             const std::vector<DescriptorRange>& ranges, std::size_t count);
+
+}  // namespace morphogen

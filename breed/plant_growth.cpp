@@ -1,0 +1,88 @@
+#include "breed/plant_growth.hpp"
+
+#include "fitness/measures.hpp"
+#include "fitness/mesh_stats.hpp"
+#include "growth/network.hpp"
+#include "io/mesh_io.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <exception>
+#include <stdexcept>
+#include <thread>
+
+namespace morphogen {
+
+PlantGrowth::PlantGrowth(const ExperimentConfig& config, const std::vector<std::string>& descriptors)
+    : grower_(config.network, config.growth),
+      dimension_(parameter_count(grower_.layers())),
+      fitness_(config.fitness),
+      descriptors_(descriptors, canopy_params_of(config.resolved.at("fitness"))) {}
+
+PlantOutcome PlantGrowth::grow(std::span<const double> params) const {
+    GrowthWorkspace workspace;
+    const GrowthState state = grower_.grow(params, workspace);
+    const MeshView mesh = state.mesh.view();
+    PlantOutcome out;
+    const FitnessOutcome scored = fitness_->evaluate(mesh);
+    if (scored.valid) out.fitness = scored.score;
+    out.measures["vertices"] = state.mesh.num_vertices();
+    out.measures["faces"] = state.mesh.num_faces();
+    const MeshStats stats = mesh_stats(mesh);
+    out.measures["height"] = stats.height;
+    out.measures["width"] = stats.width;
+    out.measures["area"] = mesh_area(mesh);
+    try {
+        out.descriptors = descriptors_(mesh);
+        for (std::size_t i = 0; i < out.descriptors.size(); ++i)
+            out.measures[descriptors_.names()[i]] = out.descriptors[i];
+    } catch (const std::invalid_argument&) {
+        out.descriptors.clear();  // a degenerate plant: the search cannot place it
+    }
+    out.glb = encode_mesh(mesh, MeshFormat::glb, {}, "plant.glb");
+    RenderOptions thumb;
+    thumb.size = kThumbPixels;
+    out.thumb = render_mesh(mesh, thumb);
+    return out;
+}
+
+Evaluation PlantGrowth::evaluate(std::span<const double> params) const {
+    GrowthWorkspace workspace;
+    const GrowthState state = grower_.grow(params, workspace);
+    const MeshView mesh = state.mesh.view();
+    const FitnessOutcome scored = fitness_->evaluate(mesh);
+    Evaluation out{scored.score, scored.valid, scored.error, static_cast<double>(state.mesh.num_vertices())};
+    if (!out.valid) return out;
+    try {
+        out.descriptors = descriptors_(mesh);
+    } catch (const std::invalid_argument& e) {
+        out.valid = false;
+        out.error = std::string("descriptors: ") + e.what();
+    }
+    return out;
+}
+
+std::vector<PlantOutcome> PlantGrowth::grow_all(const std::vector<std::vector<double>>& genomes, int threads) const {
+    std::vector<PlantOutcome> out(genomes.size());
+    std::vector<std::exception_ptr> errors(genomes.size());
+    std::atomic<std::size_t> next{0};
+    auto work = [&] {
+        for (std::size_t i = next++; i < genomes.size(); i = next++) {
+            try {
+                out[i] = grow(genomes[i]);
+            } catch (...) {
+                errors[i] = std::current_exception();
+            }
+        }
+    };
+    const auto n = static_cast<std::size_t>(std::clamp(threads, 1, 64));
+    std::vector<std::thread> pool;
+    for (std::size_t t = 1; t < std::min(n, genomes.size()); ++t) pool.emplace_back(work);
+    work();
+    for (std::thread& t : pool) t.join();
+    for (const std::exception_ptr& e : errors)
+        if (e) std::rethrow_exception(e);
+    return out;
+}
+
+}  // namespace morphogen

@@ -1,0 +1,56 @@
+#pragma once
+// One plant of a breeding session grown from its genome: its score under the
+// config's fitness, its measures, and the files the page shows (the plain
+// GLB and a thumbnail, by the project's renderer). Growth and scoring are pure functions of the
+// genome and the config, so a replay grows the same bytes.
+#include "fitness/descriptors.hpp"
+#include "evolution/individual.hpp"
+#include "growth/genome_grower.hpp"
+#include "report/render.hpp"
+#include "run/experiment_config.hpp"
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace morphogen {
+
+inline constexpr int kThumbPixels = 128;
+
+struct PlantOutcome {
+    std::optional<double> fitness;          // none when the fitness found it invalid
+    std::map<std::string, double> measures;  // vertices, faces, height, width, area, and each descriptor
+    std::vector<double> descriptors;        // the explore search's descriptors; empty when not measurable
+    std::string glb;                        // the plain GLB bytes
+    Image thumb;                            // kThumbPixels square (report/render.hpp)
+};
+
+class PlantGrowth {
+public:
+    // `descriptors`: the measures the explore search places plants by.
+    PlantGrowth(const ExperimentConfig& config, const std::vector<std::string>& descriptors);
+
+    const GenomeGrower& grower() const { return grower_; }
+    std::size_t dimension() const { return dimension_; }
+    const std::vector<std::string>& descriptor_names() const { return descriptors_.names(); }
+
+    // Grows and scores one genome; thread-safe (a workspace per call).
+    // Throws ConfigError for a genome of the wrong size.
+    PlantOutcome grow(std::span<const double> params) const;
+    // The search's view of a genome (explore.hpp): valid when the fitness
+    // is and the descriptors are measurable; no files made. Thread-safe.
+    Evaluation evaluate(std::span<const double> params) const;
+    // grow() for many genomes on up to `threads` threads; results in order.
+    std::vector<PlantOutcome> grow_all(const std::vector<std::vector<double>>& genomes, int threads) const;
+
+private:
+    GenomeGrower grower_;
+    std::size_t dimension_;
+    std::shared_ptr<const Fitness> fitness_;
+    DescriptorSet descriptors_;
+};
+
+}  // namespace morphogen
