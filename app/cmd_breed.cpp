@@ -17,6 +17,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cstdlib>
 #include <ctime>
@@ -129,9 +130,17 @@ int run_breed(const BreedOptions& o) {
                   << ", not only this machine: anyone who can reach it and has the token can breed and write files\n";
     std::cerr << "morphogen breed: session " << session->dir().string() << "; Ctrl-C saves and stops\n";
     if (!o.no_browser) open_browser(server.address());
-    std::thread serving([&server] { server.run(); });
+    std::atomic<bool> served{false};
+    std::thread serving([&server, &served] {
+        server.run();
+        served = true;
+    });
     while (!StopSignals::requested()) std::this_thread::sleep_for(std::chrono::milliseconds(100));
-    server.stop();
+    // A stop that comes before the server listens does nothing: ask until it ends.
+    while (!served) {
+        server.stop();
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     serving.join();
     session.reset();  // a search in flight stops, and its grid is saved
     std::cerr << "morphogen breed: saved " << (o.resume.empty() ? "the session" : o.resume) << "\n";

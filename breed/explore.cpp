@@ -105,8 +105,14 @@ std::vector<std::size_t> pick_different_good(const std::vector<const Individual*
     // Fittest first; ties: the lower index (the lower cell).
     auto fitter = [&](std::size_t a, std::size_t b) { return fitness[a] > fitness[b] || (fitness[a] == fitness[b] && a < b); };
 
+    // Good: at or above the median, and above the lowest fitness when any
+    // elite is (many elites of a plateau, e.g. plants scoring 0, make the
+    // median the lowest fitness).
+    const double lowest = sorted.empty() ? 0.0 : sorted.front();
+    const bool above_lowest = !sorted.empty() && sorted.back() > lowest;
     std::vector<std::size_t> good, rest;
-    for (std::size_t i = 0; i < elites.size(); ++i) (fitness[i] >= median ? good : rest).push_back(i);
+    for (std::size_t i = 0; i < elites.size(); ++i)
+        (fitness[i] >= median && (!above_lowest || fitness[i] > lowest) ? good : rest).push_back(i);
     std::vector<std::size_t> picked;
     if (!good.empty()) {
         picked.push_back(*std::min_element(good.begin(), good.end(), fitter));

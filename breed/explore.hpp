@@ -9,8 +9,9 @@
 // the elites after n births are a pure function of (seeds, seed, n), so a
 // replay that runs the recorded number of births gets the same grid.
 //
-// The pick: the elites whose fitness is at least the median elite fitness,
-// then farthest-point sampling over their descriptors (each scaled by its
+// The pick: the elites whose fitness is at least the median elite fitness
+// (and above the lowest, when any elite is: a plateau of plants scoring 0
+// must not make every elite "good"), then farthest-point sampling over their descriptors (each scaled by its
 // range): the fittest first, then repeatedly the one farthest from all
 // picked so far (ties: the lower cell). Fewer good elites than cells: the
 // rest by fitness.

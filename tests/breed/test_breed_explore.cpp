@@ -37,6 +37,13 @@ TEST_CASE("the pick: fittest first, then the farthest among the elites at or abo
     // More cells than good elites: the rest by fitness.
     CHECK(pick_different_good(elites, ranges, 6) == std::vector<std::size_t>{0, 2, 3, 1, 5, 4});
     CHECK(pick_different_good({}, ranges, 3).empty());
+    // A plateau at the bottom: the median is the lowest fitness, and only
+    // the elites above it are good.
+    const std::vector<Individual> p = {elite(0, 0, 0), elite(0, 1, 10), elite(0, 0.5, 5), elite(3, 0.1, 1),
+                                       elite(5, 0.2, 2)};
+    std::vector<const Individual*> plateau;
+    for (const Individual& i : p) plateau.push_back(&i);
+    CHECK(pick_different_good(plateau, ranges, 3) == std::vector<std::size_t>{4, 3, 0});
 }
 
 TEST_CASE("explore runs in the background, reports progress, and its elites become the next grid", "[breed]") {

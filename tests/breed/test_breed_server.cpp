@@ -336,3 +336,39 @@ TEST_CASE("Ctrl-C saves and stops; --replay refuses what it cannot replay", "[br
     CHECK(run_breed_command({"--replay", tmp.file("s")}) == 2);                           // no --out
     CHECK(run_breed_command({"--resume", tmp.file("s"), "--seed", "3"}) == 2);
 }
+
+TEST_CASE("Ctrl-C during a search keeps what it found as the next grid", "[breed][server]") {
+    TempDir tmp("breed_server");
+    json started;
+    {
+        BreedProcess server({config_file(tmp), "--out", tmp.file("s")});
+        Api api(server);
+        std::string parent;
+        const json state = api.state();
+        for (const json& p : state.at("grid"))
+            if (parent.empty() && p.at("fitness").is_number() && p.at("measures").contains("spread"))
+                parent = p.at("id").get<std::string>();
+        REQUIRE(!parent.empty());
+        auto r = api.post("/api/explore", {{"parents", {parent}}, {"births", 100000}});
+        REQUIRE(status(r) == 202);
+        json s = api.state();
+        for (int i = 0; i < 400 && s.at("search").at("done").get<int>() < 3; ++i) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(25));
+            s = api.state();
+        }
+        CHECK(s.at("search").at("running") == true);
+        CHECK(s.at("can_undo") == false);
+        CHECK(status(api.post("/api/undo", json::object())) == 409);
+        server.signal(SIGINT);
+        CHECK(server.wait() == 0);
+    }
+    BreedProcess again({"--resume", tmp.file("s")});
+    Api api(again);
+    const json resumed = api.state();
+    CHECK(resumed.at("generation") == 1);
+    CHECK(resumed.at("grid").size() == 12);
+    const std::string log = read_text(tmp.path / "s" / "choices.jsonl");
+    CHECK(log.find("\"choice\":\"explore\"") != std::string::npos);
+    CHECK(run_breed_command({"--replay", tmp.file("s"), "--out", tmp.file("r")}) == 0);
+    CHECK(session_difference(tmp.path / "s", tmp.path / "r") == "");
+}
