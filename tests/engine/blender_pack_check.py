@@ -1,10 +1,11 @@
 """A species pack imported into Blender (headless) has what the pack promises.
 
-Run: blender -b --factory-startup --python blender_pack_check.py -- PACK_DIR
+Run: blender -b --factory-startup --python blender_pack_check.py -- PACK_DIR...
 
-For every species of PACK_DIR/manifest.json, imports plant_<id>.glb with
+For every pack and every species of its manifest.json, imports plant_<id>.glb with
 Blender's glTF importer and checks: the object plant_<id>; its LOD children
-plant_<id>_LOD0 .. (the count the pack's options ask for); each level's
+plant_<id>_LOD0 .. (the count the pack's options ask for), each mesh named
+as its object; each level's
 triangle count against the manifest; the height in metres (the manifest's,
 and the --height asked for) with the lowest point at 0 and the foot at the
 origin; the record in the object's custom properties (Blender keeps glTF
@@ -127,6 +128,7 @@ def check_species(pack, manifest, species):
               f"{path}: {name}'s children are {[c.name for c in root.children]}")
         check(len(objects) == lods + 1, f"{path}: {len(objects)} objects, not {name} and {lods} LODs")
     for i, obj in enumerate(levels):
+        check(obj.data.name == obj.name, f"{obj.name}: its mesh is named {obj.data.name}")
         polygons = obj.data.polygons
         check(all(len(p.vertices) == 3 for p in polygons), f"{obj.name}: not all triangles")
         check(len(polygons) == species['triangles'][i],
@@ -172,12 +174,7 @@ def check_scatter(pack, manifest):
     return len(meshes)
 
 
-def main():
-    argv = sys.argv[sys.argv.index('--') + 1:] if '--' in sys.argv else []
-    if len(argv) != 1:
-        print("usage: blender -b --factory-startup --python blender_pack_check.py -- PACK_DIR", file=sys.stderr)
-        sys.exit(2)
-    pack = argv[0]
+def check_pack(pack):
     with open(os.path.join(pack, 'manifest.json')) as f:
         manifest = json.load(f)
     check(manifest['species'], f"{pack}: no species")
@@ -185,15 +182,24 @@ def main():
     for species in manifest['species']:
         wind.add(check_species(pack, manifest, species))
     drawn = check_scatter(pack, manifest)
-    print(f"blender {bpy.app.version_string}: {len(manifest['species'])} species, "
-          f"{manifest['options']['lods']} LODs each, names, triangles, height and extras checked; "
+    print(f"blender {bpy.app.version_string}: {pack}: {len(manifest['species'])} species, "
+          f"{manifest['options']['lods']} LODs each: names, triangles, height and extras checked; "
           f"scatter.glb without EXT_mesh_gpu_instancing support draws {drawn} mesh objects "
           f"(one per species: the plain-node fallback)")
     if 'dropped' in wind:
-        print("_WIND: in every level of every file (read by Blender's glTF reader); "
+        print(f"_WIND: {pack}: in every level of every file (read by Blender's glTF reader); "
               "Blender's importer drops custom attributes, so the imported meshes have none")
     elif 'imported' in wind:
-        print("_WIND: imported onto every mesh, values in [0, 1]")
+        print(f"_WIND: {pack}: imported onto every mesh, values in [0, 1]")
+
+
+def main():
+    packs = sys.argv[sys.argv.index('--') + 1:] if '--' in sys.argv else []
+    if not packs:
+        print("usage: blender -b --factory-startup --python blender_pack_check.py -- PACK_DIR...", file=sys.stderr)
+        sys.exit(2)
+    for pack in packs:
+        check_pack(pack)
     for message in failures:
         print("FAIL " + message, file=sys.stderr)
     sys.exit(1 if failures else 0)
