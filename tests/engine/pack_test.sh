@@ -29,14 +29,22 @@ if [ "$mode" = bytes ]; then
     diff -r ${run}_a ${run}_b
     ls ${run}_a/plant_*.glb >/dev/null
     test -f ${run}_a/scatter.glb
+    test -f ${run}_a/manifest.json
   done
   # A used directory is refused (exit 3: an I/O error) and keeps its files.
   mkdir used && echo mine >used/notes.txt
   status=0
   "$exe" archive elites --pack used 2>err.txt || status=$?
-  [ "$status" -ne 0 ] && grep -q "not empty" err.txt && [ "$(cat used/notes.txt)" = mine ] && [ "$(ls used)" = notes.txt ]
-  # A GA run without --pack is still refused by name.
-  ! "$exe" archive ga --out ga_elites 2>/dev/null
+  if [ "$status" -ne 3 ] || ! grep -q "not empty" err.txt || [ "$(cat used/notes.txt)" != mine ] ||
+     [ "$(ls used)" != notes.txt ]; then
+    echo "a used directory: exit $status, $(cat err.txt), now holds: $(ls used)" >&2
+    exit 1
+  fi
+  # A GA run without --pack is still refused.
+  if "$exe" archive ga --out ga_elites 2>/dev/null; then
+    echo "archive of a GA run without --pack was not refused" >&2
+    exit 1
+  fi
   echo "same bytes: $(ls elites_a | wc -l) + $(ls ga_a | wc -l) files"
   exit 0
 fi

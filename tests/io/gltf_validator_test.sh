@@ -47,7 +47,8 @@ sed 's/"export_every": 1}/"export_every": 1, "export_glb": {"wind": true}}/' \
 "$exe" archive engine_run --pack pack_ga_lods --lods 2 >/dev/null
 "$exe" archive engine_run --pack pack_ga_wind --wind >/dev/null
 for pack in pack_plain pack_lods_wind pack_ga_lods pack_ga_wind; do
-  test -f "$pack/manifest.json" && test -f "$pack/scatter.glb"
+  test -f "$pack/manifest.json"
+  test -f "$pack/scatter.glb"
 done
 
 node "$src/tools/gltf/validate.js" ./*.glb run/best/*.glb plain_elites/*.glb engine_elites/*.glb lod_elites/*.glb \
