@@ -1,7 +1,8 @@
 // `morphogen archive RUN_DIR`: the elites of a MAP-Elites run, from its
 // checkpoint: each as .glb + .obj + .genome.json with species.csv, and
 // optionally the map of elites as a PNG (each occupied cell's plant at its
-// place on the descriptor grid, beside a fitness heatmap).
+// place on the descriptor grid, beside a fitness heatmap). With --pack DIR,
+// a species pack of a MAP-Elites or GA run instead (run/run_pack.hpp).
 #include "app/commands.hpp"
 #include "app/plant_export_options.hpp"
 #include "base/atomic_file.hpp"
@@ -13,6 +14,7 @@
 #include "run/growth_problem.hpp"
 #include "run/plant_exports.hpp"
 #include "run/run_directory.hpp"
+#include "run/run_pack.hpp"
 #include "run/run_records.hpp"
 
 #include <algorithm>
@@ -31,7 +33,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct ArchiveOptions {
-    std::string dir, out, png;
+    std::string dir, out, png, pack;
     std::uint64_t top = 0;  // 0 = every elite
     int size = 96;          // pixels per map cell
     PlantExportOptions plant;
@@ -145,11 +147,17 @@ int run_archive(const ArchiveOptions& o) {
     const RunPaths paths = run_paths(o.dir);
     if (!fs::is_directory(paths.dir)) throw IoError("run directory " + o.dir + " does not exist");
     const RunState state = load_checkpoint(paths.checkpoint);
+    const ExperimentConfig config = read_experiment_config(state.config, paths.checkpoint.string());
+    if (!o.pack.empty()) {
+        const GrowthProblem problem(config);
+        const std::size_t species = write_run_pack(config, *state.search, problem.grower(), o.plant, o.top, o.pack);
+        std::cout << "wrote a pack of " << species << " species to " << o.pack << " (manifest.json, scatter.glb)\n";
+        return 0;
+    }
     const MapElitesState* run_elites = elites_state(*state.search);
     if (run_elites == nullptr)
         throw ConfigError(o.dir + ": not a MAP-Elites run (evolution.algorithm is \"steady_state\"; its best meshes "
-                                  "are in best/)");
-    const ExperimentConfig config = read_experiment_config(state.config, paths.checkpoint.string());
+                                  "are in best/, and --pack DIR packs its population)");
     const Archive& archive = run_elites->archive;
     if (!o.png.empty() && archive.kind() != ArchiveKind::grid)
         throw ConfigError("--png: the map of elites is drawn for grid archives; this run's archive is a CVT");
@@ -191,12 +199,19 @@ int run_archive(const ArchiveOptions& o) {
 
 void add_archive_command(CLI::App& root, CommandRunner& selected) {
     auto options = std::make_shared<ArchiveOptions>();
-    CLI::App* cmd = root.add_subcommand("archive", "Export the elites of a MAP-Elites run (and draw its map)");
+    CLI::App* cmd =
+        root.add_subcommand("archive", "Export the elites of a MAP-Elites run (and draw its map), or a run's species pack");
     cmd->add_option("dir", options->dir, "run directory")->required();
     cmd->add_option("--out", options->out, "where to write the elites (default RUN_DIR/elites)");
     cmd->add_option("--top", options->top, "only the N fittest elites (0 = all)");
     cmd->add_option("--png", options->png, "draw the map of elites (grid archives) to this PNG file");
     cmd->add_option("--size", options->size, "pixels per map cell")->check(CLI::Range(32, 512));
+    cmd->add_option("--pack", options->pack,
+                    "Write a species pack to this new directory instead: plant_<id>.glb per species (with "
+                    "--height/--lods/--wind), manifest.json and scatter.glb; MAP-Elites runs' elites or GA runs' "
+                    "population")
+        ->excludes("--out")
+        ->excludes("--png");
     add_plant_export_options(cmd, options->plant);
     select_on_pick(cmd, selected, options, run_archive, [options] { check_plant_export_options(options->plant, ""); });
 }

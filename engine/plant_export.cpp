@@ -28,34 +28,45 @@ std::string plant_export_problem(const PlantExportOptions& options) {
     return {};
 }
 
-std::string plant_glb_bytes(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options,
-                            const std::string& source) {
+EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options) {
     if (const std::string problem = plant_export_problem(options); !problem.empty()) throw ConfigError(problem);
-    const PlacedPlant placed = place_plant(plant.mesh, options.height_m);
+    PlacedPlant placed = place_plant(plant.mesh, options.height_m);
 
-    nlohmann::json extras = record_json(record);
-    extras["generator"] = "morphogen";
-    extras["height_m"] = placed.height_m;
-    extras["metres_per_unit"] = placed.metres_per_unit;
-    if (options.wind) extras["wind"] = "_WIND";
+    EnginePlant ready{.name = "plant_" + record.id, .extras = record_json(record), .levels = {}, .wind = {},
+                      .lod_nodes = options.lods > 0, .height_m = placed.height_m};
+    ready.extras["generator"] = "morphogen";
+    ready.extras["height_m"] = placed.height_m;
+    ready.extras["metres_per_unit"] = placed.metres_per_unit;
+    if (options.wind) ready.extras["wind"] = "_WIND";
     std::vector<float> wind;
     if (options.wind) wind = plant_wind(placed.mesh.view(), plant.birth_steps, plant.steps);
-    PlantGlb glb{.name = "plant_" + record.id, .extras = std::move(extras), .levels = {}, .lod_nodes = options.lods > 0};
     if (options.lods == 0) {
-        glb.levels.push_back(PlantLevel{.mesh = placed.mesh.view(), .wind = std::move(wind), .extras = {}});
-        return plant_glb_bytes(glb, source);
+        ready.levels.push_back(std::move(placed.mesh));
+        ready.wind.push_back(std::move(wind));
+        return ready;
     }
-    // The levels must outlive glb, which only views them.
-    const std::vector<MeshArrays> levels = simplify_lods(placed.mesh.view(), options.lods);
-    for (const MeshArrays& level : levels) {
-        std::vector<float> level_wind;
-        if (options.wind)
-            level_wind = glb.levels.empty() ? wind : transfer_wind(placed.mesh.view(), wind, level.view());
-        glb.levels.push_back(PlantLevel{.mesh = level.view(),
-                                        .wind = std::move(level_wind),
-                                        .extras = {{"triangles", level.faces.size()}}});
+    ready.levels = simplify_lods(placed.mesh.view(), options.lods);
+    for (const MeshArrays& level : ready.levels) {
+        if (!options.wind) ready.wind.emplace_back();
+        else if (ready.wind.empty()) ready.wind.push_back(wind);
+        else ready.wind.push_back(transfer_wind(placed.mesh.view(), wind, level.view()));
+    }
+    return ready;
+}
+
+std::string plant_glb_bytes(const EnginePlant& plant, const std::string& source) {
+    PlantGlb glb{.name = plant.name, .extras = plant.extras, .levels = {}, .lod_nodes = plant.lod_nodes};
+    for (std::size_t i = 0; i < plant.levels.size(); ++i) {
+        nlohmann::json extras;
+        if (plant.lod_nodes) extras = {{"triangles", plant.levels[i].faces.size()}};
+        glb.levels.push_back(PlantLevel{.mesh = plant.levels[i].view(), .wind = plant.wind[i], .extras = extras});
     }
     return plant_glb_bytes(glb, source);
+}
+
+std::string plant_glb_bytes(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options,
+                            const std::string& source) {
+    return plant_glb_bytes(make_engine_plant(plant, record, options), source);
 }
 
 void write_plant_glb(const std::filesystem::path& out, const GrownPlant& plant, const PlantRecord& record,

@@ -6,10 +6,13 @@
 #include "engine/plant_record.hpp"
 #include "mesh/mesh.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 namespace morphogen {
 
@@ -37,6 +40,24 @@ struct GrownPlant {
     std::span<const int> birth_steps;
     int steps = 0;
 };
+
+// A plant made engine-ready and not yet laid out in glTF: what its GLB holds,
+// and what a species pack (engine/species_pack.hpp) reads from it besides.
+struct EnginePlant {
+    std::string name;                      // "plant_<id>"
+    nlohmann::json extras;                 // the record and the placement (docs/file-formats.md)
+    std::vector<MeshArrays> levels;        // placed: one mesh without --lods, else LOD0 .. LOD(N-1)
+    std::vector<std::vector<float>> wind;  // per level: 4 floats per vertex with --wind, else empty
+    bool lod_nodes = false;                // --lods: levels as child nodes plant_<id>_LOD<i>
+    double height_m = 0.0;                 // the placed plant's height in metres
+};
+
+// Places the plant, makes its levels and wind data. Throws as plant_glb_bytes.
+EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options);
+
+// The GLB bytes of a plant made engine-ready; IoError naming `source` when
+// it cannot be encoded.
+std::string plant_glb_bytes(const EnginePlant& plant, const std::string& source);
 
 // The GLB bytes. Throws ConfigError for bad options (plant_export_problem),
 // MeshError for a plant that cannot be placed or scaled,

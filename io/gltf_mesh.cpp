@@ -12,6 +12,7 @@
 #include <cstring>
 #include <limits>
 #include <sstream>
+#include <stdexcept>
 #include <vector>
 
 namespace morphogen::gltf {
@@ -153,6 +154,43 @@ int add_floats(tinygltf::Model& model, std::span<const float> values, int type, 
     model.accessors[acc].minValues = std::move(lo);
     model.accessors[acc].maxValues = std::move(hi);
     return acc;
+}
+
+tinygltf::Value json_value(const nlohmann::json& json) {
+    switch (json.type()) {
+    case nlohmann::json::value_t::boolean: return tinygltf::Value(json.get<bool>());
+    case nlohmann::json::value_t::number_integer:
+    case nlohmann::json::value_t::number_unsigned:
+        // Value holds int: larger whole numbers go as doubles (exact below 2^53).
+        if (json.get<double>() >= -2147483648.0 && json.get<double>() <= 2147483647.0)
+            return tinygltf::Value(json.get<int>());
+        return tinygltf::Value(json.get<double>());
+    case nlohmann::json::value_t::number_float: return tinygltf::Value(json.get<double>());
+    case nlohmann::json::value_t::string: return tinygltf::Value(json.get<std::string>());
+    case nlohmann::json::value_t::array: {
+        tinygltf::Value::Array items;
+        for (const nlohmann::json& item : json) items.push_back(json_value(item));
+        return tinygltf::Value(std::move(items));
+    }
+    case nlohmann::json::value_t::object: {
+        tinygltf::Value::Object members;
+        for (const auto& [key, item] : json.items()) members[key] = json_value(item);
+        return tinygltf::Value(std::move(members));
+    }
+    default: return {};
+    }
+}
+
+int add_wind_mesh(tinygltf::Model& model, MeshView mesh, std::span<const float> wind, int material,
+                  const std::string& name) {
+    const int index = add_mesh(model, mesh, material, name);
+    if (index < 0) throw std::invalid_argument(name + ": a plant mesh needs vertices and faces");
+    if (wind.empty()) return index;
+    if (wind.size() != 4 * mesh.positions.size())
+        throw std::invalid_argument(name + ": wind data needs 4 values per vertex");
+    model.meshes[index].primitives[0].attributes["_WIND"] =
+        add_floats(model, wind, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER);
+    return index;
 }
 
 std::string glb_bytes(const tinygltf::Model& model, const std::string& path) {

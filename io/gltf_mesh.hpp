@@ -1,11 +1,13 @@
 #pragma once
 // glTF building blocks shared by the GLB mesh writer (mesh_io_glb.cpp) and the
-// growth animation (report/growth_animation.cpp): the plant material, meshes and
+// growth animation (report/growth_animation.cpp), the plant GLB and the
+// scatter (plant_glb.cpp, scatter_glb.cpp): the plant material, meshes and
 // float arrays appended to one buffer, and the binary (.glb) encoding.
 // Meshes are stored Y-up (glTF's convention) as float32 positions with
 // min/max (the validator requires them), smooth normals and uint32 indices.
 #include "mesh/mesh.hpp"
 
+#include <nlohmann/json.hpp>
 #include <tiny_gltf.h>
 
 #include <cstddef>
@@ -41,6 +43,16 @@ int add_mesh(tinygltf::Model& model, MeshView mesh, int material, const std::str
 // animation inputs). `target` is the buffer view's: 0 (none) for animation
 // data, TINYGLTF_TARGET_ARRAY_BUFFER for a vertex attribute.
 int add_floats(tinygltf::Model& model, std::span<const float> values, int type, int target = 0);
+
+// `json` as tinygltf's Value, for glTF `extras` (null: none). Whole numbers
+// beyond int go as doubles (exact below 2^53).
+tinygltf::Value json_value(const nlohmann::json& json);
+
+// add_mesh, and with wind data (4 floats per vertex, empty: none) the
+// mesh's `_WIND` vertex attribute. Throws std::invalid_argument for a mesh
+// without vertices or faces, or wind data of the wrong length.
+int add_wind_mesh(tinygltf::Model& model, MeshView mesh, std::span<const float> wind, int material,
+                  const std::string& name);
 
 // The .glb bytes of `model`; IoError naming `path` if tinygltf cannot encode it.
 std::string glb_bytes(const tinygltf::Model& model, const std::string& path);

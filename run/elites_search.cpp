@@ -39,17 +39,22 @@ public:
         row.new_cells = step.generation_new_cells;
     }
     // The fittest elite (ties: the lower cell).
-    const Individual* exported() const override {
-        const Individual* best = nullptr;
-        for (const auto& [cell, elite] : search_.state().archive.elites())
-            if (best == nullptr || elite.fitness > best->fitness) best = &elite;
-        return best;
+    const Individual* exported() const override { return fittest().second; }
+    std::optional<std::uint64_t> exported_cell() const override {
+        const auto [cell, elite] = fittest();
+        return elite != nullptr ? std::optional<std::uint64_t>(cell) : std::nullopt;
     }
     std::unique_ptr<SearchState> save() const override {
         return std::make_unique<ElitesSearchState>(search_.state());
     }
 
 private:
+    std::pair<std::uint64_t, const Individual*> fittest() const {
+        std::pair<std::uint64_t, const Individual*> best{0, nullptr};
+        for (const auto& [cell, elite] : search_.state().archive.elites())
+            if (best.second == nullptr || elite.fitness > best.second->fitness) best = {cell, &elite};
+        return best;
+    }
     double qd_offset_;
 };
 }  // namespace

@@ -23,17 +23,19 @@ PlantRecord birth_record(const ExperimentConfig& config, const Individual& indiv
     return record;
 }
 
-void export_engine_plant(const GenomeGrower& grower, std::span<const double> params, const PlantRecord& record,
-                         const PlantExportOptions& options, const std::filesystem::path& stem) {
+DatedGrowth grow_dated(const GenomeGrower& grower, std::span<const double> params) {
     BirthSteps births(grower.seed().mesh.num_vertices());
     GrowthWorkspace workspace;
     const Network network(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())});
-    const GrowthState state = grower.grow(network, workspace, births.observer());
-    const MeshView mesh = state.mesh.view();
-    write_plant_glb(stem.string() + ".glb",
-                    GrownPlant{.mesh = mesh, .birth_steps = births.steps(), .steps = state.steps_done}, record,
-                    options);
-    write_mesh(mesh, stem.string() + ".obj");
+    GrowthState state = grower.grow(network, workspace, births.observer());
+    return DatedGrowth{.state = std::move(state), .birth_steps = births.steps()};
+}
+
+void export_engine_plant(const GenomeGrower& grower, std::span<const double> params, const PlantRecord& record,
+                         const PlantExportOptions& options, const std::filesystem::path& stem) {
+    const DatedGrowth grown = grow_dated(grower, params);
+    write_plant_glb(stem.string() + ".glb", grown.plant(), record, options);
+    write_mesh(grown.state.mesh.view(), stem.string() + ".obj");
     save_genome(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())},
                 stem.string() + ".genome.json");
 }

@@ -22,6 +22,17 @@ namespace morphogen {
 PlantRecord birth_record(const ExperimentConfig& config, const Individual& individual,
                          const std::vector<std::string>& measure_names, std::optional<std::uint64_t> cell);
 
+// A genome grown with each vertex's birth step (engine/birth_steps.hpp), as
+// the wind data of an engine-ready GLB needs it.
+struct DatedGrowth {
+    GrowthState state;
+    std::vector<int> birth_steps;
+    GrownPlant plant() const {
+        return GrownPlant{.mesh = state.mesh.view(), .birth_steps = birth_steps, .steps = state.steps_done};
+    }
+};
+DatedGrowth grow_dated(const GenomeGrower& grower, std::span<const double> params);
+
 // Grows `params` and writes <stem>.glb (engine-ready, with `options`),
 // <stem>.obj (the plain mesh, as export_genome writes it) and
 // <stem>.genome.json, each atomically. Throws IoError naming the file.

@@ -97,7 +97,8 @@ void RunRecorder::export_best(std::uint64_t generation) {
     if (const auto& options = session_.config.run.export_glb) {
         // Grown again on the I/O thread: an engine GLB needs each vertex's birth step.
         io_.post([&problem, params = best->params, stem, options = *options,
-                  record = birth_record(session_.config, *best, session_.config.qd.measure_names(), std::nullopt)] {
+                  record = birth_record(session_.config, *best, session_.config.qd.measure_names(),
+                                       search_.exported_cell())] {
             export_engine_plant(problem.grower(), params, record, options, stem);
         });
         return;

@@ -41,6 +41,8 @@ public:
     virtual void fill(HistoryRow& row, const Inserted& generation_end) const = 0;
     // The individual exported to best/ (nullptr: none yet).
     virtual const Individual* exported() const = 0;
+    // The MAP-Elites cell of exported(), for its record (none: no cell).
+    virtual std::optional<std::uint64_t> exported_cell() const { return std::nullopt; }
     // A copy of its state as it is, for a checkpoint.
     virtual std::unique_ptr<SearchState> save() const = 0;
 };

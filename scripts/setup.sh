@@ -12,7 +12,7 @@ packages=(
   libopenmpi-dev openmpi-bin
   nodejs       # the Khronos glTF validator (tools/gltf) and playwright-core (tools/browser)
   libcpp-httplib-dev   # morphogen breed's local HTTP server
-  blender      # the species pack's import check (headless)
+  blender python3-numpy   # the species pack's import check (headless; Blender's glTF importer needs numpy)
 )
 
 missing=()

@@ -5,6 +5,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <map>
 #include <sstream>
 
 using namespace morphogen::test;
@@ -142,4 +143,67 @@ TEST_CASE("run.export_glb exports the best of generation engine-ready", "[cli][e
     const CliResult bad = run_morphogen("validate " + q(dir.path / "bad.json"));
     CHECK(bad.code == 2);
     CHECK_THAT(bad.output, Catch::Contains("run.export_glb.lods") && Catch::Contains("run.export_glb.size"));
+}
+
+// archive.csv's rows: birth id -> cell.
+std::map<long, long> cells_by_birth(const fs::path& run) {
+    std::istringstream rows(read_text(run / "archive.csv"));
+    std::string line;
+    std::getline(rows, line);
+    std::map<long, long> cells;
+    while (std::getline(rows, line)) cells[std::stol(line.substr(line.rfind(',') + 1))] = std::stol(line.substr(0, line.find(',')));
+    return cells;
+}
+
+TEST_CASE("run.export_glb of a MAP-Elites run records the exported elite's cell", "[cli][engine]") {
+    TempDir dir("engine-best-cell");
+    std::string config = read_text(kElitesConfig);
+    config.replace(config.find("\"export_every\": 1}"), 18, R"("export_every": 1, "export_glb": {"wind": true}})");
+    write_text(dir.path / "elites.json", config);
+    const CliResult r = run_morphogen("evolve " + q(dir.path / "elites.json") + " --out " + q(dir.path / "run"));
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    // The last generation's best is in the final archive, in the cell its extras name.
+    const tinygltf::Model model = parse_glb(read_text(dir.path / "run" / "best" / "gen_0002.glb"));
+    const tinygltf::Value& extras = model.nodes.at(0).extras;
+    const std::map<long, long> cells = cells_by_birth(dir.path / "run");
+    REQUIRE(cells.count(extras.Get("birth_id").GetNumberAsInt()) == 1);
+    CHECK(extras.Get("cell").GetNumberAsInt() == cells.at(extras.Get("birth_id").GetNumberAsInt()));
+}
+
+TEST_CASE("archive --pack packs a MAP-Elites run's elites and a GA run's population", "[cli][engine][pack]") {
+    TempDir dir("engine-pack");
+    const fs::path run = dir.path / "run", ga = dir.path / "ga";
+    REQUIRE(run_morphogen("evolve " + q(kElitesConfig) + " --out " + q(run)).code == 0);
+    REQUIRE(run_morphogen("evolve " + q(std::string(MORPHOGEN_SOURCE_DIR) + "/tests/app/fixtures/engine_best.json") +
+                          " --out " + q(ga)).code == 0);
+    const CliResult r = run_morphogen("archive " + q(run) + " --pack " + q(dir.path / "pack") + " --lods 2 --wind");
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const nlohmann::json manifest = nlohmann::json::parse(read_text(dir.path / "pack" / "manifest.json"));
+    const std::map<long, long> cells = cells_by_birth(run);
+    CHECK(manifest["species"].size() == cells.size());  // every elite
+    CHECK(manifest["algorithm"] == "map_elites");
+    long previous_cell = -1;
+    for (const nlohmann::json& species : manifest["species"]) {
+        const long birth = species["birth_id"].get<long>();
+        CHECK(species["cell"].get<long>() == cells.at(birth));
+        CHECK(species["cell"].get<long>() > previous_cell);  // cell order
+        previous_cell = species["cell"].get<long>();
+        const tinygltf::Model model = parse_glb(read_text(dir.path / "pack" / species["file"].get<std::string>()));
+        CHECK(model.nodes.at(0).extras.Get("cell").GetNumberAsInt() == cells.at(birth));
+        CHECK(model.nodes.at(0).children.size() == 2);
+    }
+
+    REQUIRE(run_morphogen("archive " + q(ga) + " --pack " + q(dir.path / "ga_pack") + " --top 2").code == 0);
+    const nlohmann::json ga_manifest = nlohmann::json::parse(read_text(dir.path / "ga_pack" / "manifest.json"));
+    CHECK(ga_manifest["algorithm"] == "steady_state");
+    REQUIRE(ga_manifest["species"].size() == 2);
+    CHECK(ga_manifest["species"][0]["fitness"].get<double>() >= ga_manifest["species"][1]["fitness"].get<double>());
+    CHECK_FALSE(ga_manifest["species"][0].contains("cell"));
+    CHECK(ga_manifest["options"]["lods"] == 0);
+
+    // --pack with --out is refused before anything is written (exit 2).
+    CHECK(run_morphogen("archive " + q(run) + " --pack " + q(dir.path / "p3") + " --out " + q(dir.path / "o")).code == 2);
+    CHECK_FALSE(fs::exists(dir.path / "p3"));
 }

@@ -3,8 +3,10 @@
 # (tools/gltf, installed by scripts/setup.sh) with 0 errors and 0 warnings:
 # grow's plain and engine-ready GLBs (with and without wind and levels of
 # detail), the growth animation, a run's best of generation and archive's
-# elites (also with levels of detail), and the best of generation with
-# run.export_glb.
+# elites (also with levels of detail), the best of generation with
+# run.export_glb (GA with levels of detail and wind, MAP-Elites with wind
+# only), and species packs (every plant_<id>.glb and scatter.glb) of a
+# MAP-Elites and a GA run, with and without levels of detail and wind.
 # Usage: gltf_validator_test.sh MORPHOGEN SOURCE_DIR. Exit 77 (skipped) only
 # when node is not installed.
 set -euo pipefail
@@ -23,6 +25,8 @@ trap 'rm -rf "$work"' EXIT
 cd "$work"
 
 "$exe" grow --random 3 --steps 60 -o plain.glb --animate animation.glb --frames 8 >/dev/null
+# The animation is plain whatever the mesh beside it asks for.
+"$exe" grow --random 4 --steps 200 -o lods_wind.glb --lods 3 --wind --animate animation_beside_lods.glb --frames 6 >/dev/null
 "$exe" grow --random 3 --steps 60 -o height.glb --height 2.5 >/dev/null
 "$exe" grow --random 3 --steps 60 -o wind.glb --wind >/dev/null
 "$exe" grow --random 3 --steps 60 -o height_wind.glb --height 4 --wind >/dev/null
@@ -34,5 +38,18 @@ cd "$work"
 "$exe" archive run --out engine_elites --height 1.5 --wind >/dev/null
 "$exe" archive run --out lod_elites --lods 2 --wind >/dev/null
 "$exe" evolve "$src/tests/app/fixtures/engine_best.json" --out engine_run >/dev/null 2>&1
+# run.export_glb of a MAP-Elites run: wind, no levels of detail.
+sed 's/"export_every": 1}/"export_every": 1, "export_glb": {"wind": true}}/' \
+  "$src/tests/app/fixtures/engine_elites.json" >elites_wind.json
+"$exe" evolve elites_wind.json --out elites_wind_run >/dev/null 2>&1
+"$exe" archive run --pack pack_plain >/dev/null
+"$exe" archive run --pack pack_lods_wind --lods 3 --wind --height 2 >/dev/null
+"$exe" archive engine_run --pack pack_ga_lods --lods 2 >/dev/null
+"$exe" archive engine_run --pack pack_ga_wind --wind >/dev/null
+for pack in pack_plain pack_lods_wind pack_ga_lods pack_ga_wind; do
+  test -f "$pack/manifest.json"
+  test -f "$pack/scatter.glb"
+done
 
-node "$src/tools/gltf/validate.js" ./*.glb run/best/*.glb plain_elites/*.glb engine_elites/*.glb lod_elites/*.glb engine_run/best/*.glb
+node "$src/tools/gltf/validate.js" ./*.glb run/best/*.glb plain_elites/*.glb engine_elites/*.glb lod_elites/*.glb \
+  engine_run/best/*.glb elites_wind_run/best/*.glb pack_*/*.glb
