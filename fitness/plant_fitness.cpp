@@ -37,16 +37,41 @@ double bending_moment(MeshView mesh, const Eigen::Vector2d& axis) {
 
 }  // namespace
 
+namespace {
+
+// What face i yields of the light it catches (the rectangular hyperbola).
+double face_yield(MeshView mesh, std::size_t i, double light, double K) {
+    const double area = face_area(mesh, mesh.faces[i]);
+    if (!(area > 0.0) || light <= 0.0) return 0.0;
+    const double irradiance = light / area;
+    return area * (1.0 + K) * irradiance / (irradiance + K);
+}
+
+}  // namespace
+
 double saturating_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation) {
-    const double K = half_saturation;
     double light = 0.0;
-    for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
-        const double area = face_area(mesh, mesh.faces[i]);
-        if (!(area > 0.0) || light_per_face[i] <= 0.0) continue;
-        const double irradiance = light_per_face[i] / area;
-        light += area * (1.0 + K) * irradiance / (irradiance + K);
-    }
+    for (std::size_t i = 0; i < mesh.faces.size(); ++i) light += face_yield(mesh, i, light_per_face[i], half_saturation);
     return light;
+}
+
+std::vector<double> shoot_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation,
+                                const std::vector<Vec3>& tips, double shoot_radius) {
+    std::vector<double> shoots(tips.size(), 0.0);
+    for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
+        if (light_per_face[i] <= 0.0) continue;
+        const Face& f = mesh.faces[i];
+        const Vec3 centroid = (mesh.positions[f[0]] + mesh.positions[f[1]] + mesh.positions[f[2]]) / 3.0;
+        std::size_t nearest = tips.size();
+        double nearest_distance = shoot_radius;
+        for (std::size_t t = 0; t < tips.size(); ++t) {
+            const double distance = (tips[t] - centroid).norm();
+            if (distance <= nearest_distance && (nearest == tips.size() || distance < nearest_distance))
+                nearest = t, nearest_distance = distance;
+        }
+        if (nearest < tips.size()) shoots[nearest] += face_yield(mesh, i, light_per_face[i], half_saturation);
+    }
+    return shoots;
 }
 
 PlantScore plant_score(MeshView mesh, const PlantFitnessParams& params) {
@@ -62,12 +87,21 @@ PlantScore plant_score(MeshView mesh, const PlantFitnessParams& params) {
     skeleton_only.with_solidity = false;
     const Architecture architecture = measure_architecture(mesh, skeleton_only);
     s.tips = architecture.tips;
-    for (const Vec3& tip : architecture.tip_points) s.reproduction += std::max(0.0, tip.z() - zmin);
     s.moment = bending_moment(mesh, foot_axis(mesh, zmin, params.root_height));
     s.cost = 1.0 + params.moment_cost * s.moment;
-    // Light is the costly part: skip it when it cannot count.
-    if (s.reproduction > 0.0)
-        s.light = saturating_light(mesh, light_per_face(mesh, params.light), params.half_saturation);
+    // Light is the costly part: skip it when no tip stands above the foot.
+    const auto above_foot = [zmin](const Vec3& tip) { return tip.z() > zmin; };
+    if (std::none_of(architecture.tip_points.begin(), architecture.tip_points.end(), above_foot)) return s;
+    const std::vector<double> per_face = light_per_face(mesh, params.light);
+    s.light = saturating_light(mesh, per_face, params.half_saturation);
+    const std::vector<double> shoots =
+        shoot_light(mesh, per_face, params.half_saturation, architecture.tip_points, params.shoot_radius);
+    for (std::size_t t = 0; t < shoots.size(); ++t) {
+        const double H = params.shoot_half_light;
+        const double bearing = H > 0.0 ? shoots[t] / (shoots[t] + H) : 1.0;
+        s.bearing_tips += bearing;
+        s.reproduction += std::max(0.0, architecture.tip_points[t].z() - zmin) * bearing;
+    }
     s.score = std::sqrt(s.light * s.reproduction) / s.cost;
     return s;
 }

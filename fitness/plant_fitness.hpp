@@ -7,7 +7,7 @@
 //
 //   plant = sqrt(light · reproduction) / cost
 //   light        = Σ_f area_f · (1 + K) · I_f / (I_f + K)      I_f = light_f / area_f
-//   reproduction = Σ_tips (z_tip − z_min)
+//   reproduction = Σ_tips (z_tip − z_min) · S_t / (S_t + H)
 //   cost         = 1 + moment_cost · Σ_f area_f · r_f
 //
 // light_f is what face f catches of the suns (light_per_face, so the plant
@@ -15,7 +15,13 @@
 // a face in full sun (I_f ≈ 1) yields its area, and more sun gains nothing
 // more, so spreading the same light over more surface pays (K the relative
 // irradiance at which a face yields half; K → ∞ gives the plain light).
-// Tips are the skeleton's (fitness/architecture.hpp); r_f is the horizontal
+// Tips are the skeleton's (fitness/architecture.hpp). S_t is the tip's own
+// light: the saturating light of the faces whose centroid is nearer to tip t
+// than to any other tip and within shoot_radius of it (a shoot feeds its
+// fruit from its own leaves: branch autonomy, Sprugel et al. 1991), so a tip
+// in shade, or crowded among others, bears little; H = shoot_half_light is
+// the light at which a tip bears half (H = 0: every tip bears in full, as
+// before). r_f is the horizontal
 // distance of face f's centroid from the foot's axis, so Σ area·r is the
 // bending moment of a surface of even weight about the foot. A plant whose
 // lowest vertex is above root_height floats, and scores 0.
@@ -30,6 +36,8 @@ struct PlantFitnessParams {
     double half_saturation = 0.25;  // K, > 0
     double moment_cost = 0.0002;   // per unit of area × lever arm, >= 0
     double root_height = 0.1;     // the lowest vertex must be at or below this z
+    double shoot_radius = 2.5;    // a tip is fed by the lit faces this near (and nearest to it), > 0
+    double shoot_half_light = 4.0;  // H: a tip fed this much light bears half, >= 0 (0 = every tip in full)
     ArchitectureParams architecture;
 };
 
@@ -37,6 +45,7 @@ struct PlantScore {
     bool rooted = false;
     double light = 0, reproduction = 0, moment = 0, cost = 1, score = 0;
     int tips = 0;
+    double bearing_tips = 0;  // Σ_t S_t / (S_t + H): the tips that bear, each weighted by its light
 };
 
 // Thread-safe. Throws what light_per_face and measure_architecture throw.
@@ -44,5 +53,10 @@ PlantScore plant_score(MeshView mesh, const PlantFitnessParams& params);
 
 // The light term alone (the sum over faces above), for tests.
 double saturating_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation);
+
+// S_t above: each tip's share of the saturating light (faces nearest to it
+// within shoot_radius; a face equally near two tips goes to the first).
+std::vector<double> shoot_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation,
+                                const std::vector<Vec3>& tips, double shoot_radius);
 
 }  // namespace morphogen

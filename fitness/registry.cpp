@@ -141,6 +141,8 @@ std::unique_ptr<FitnessFunction> read_plant(ObjectReader& reader) {
     params.half_saturation = reader.number("half_saturation", params.half_saturation, 0.0, kBig, /*min_exclusive=*/true);
     params.moment_cost = reader.number("moment_cost", params.moment_cost, 0.0, kBig);
     params.root_height = reader.number("root_height", params.root_height, -kBig, kBig);
+    params.shoot_radius = reader.number("shoot_radius", params.shoot_radius, 0.0, kBig, /*min_exclusive=*/true);
+    params.shoot_half_light = reader.number("shoot_half_light", params.shoot_half_light, 0.0, kBig);
     return std::make_unique<PlantFunction>(std::move(params));
 }
 

@@ -13,8 +13,8 @@
 # A run whose history.csv is complete is not run again, and one that was
 # stopped is resumed (to the same bytes as an unbroken run), so the script
 # can be stopped and re-run; a run whose config changed is started again.
-# Cost: 6,100 births a run, about 4 minutes on 2 threads of the 2-core
-# development machine.
+# Cost: 6,100 births a run, 5-8 minutes of one core (0.05-0.08 s a birth at
+# aeafe37; experiments/2026-11-27-trees-with-limbs.md); hours of wall time on a loaded machine.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seeds=("$@")

@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <numeric>
 
 using namespace morphogen;
@@ -84,6 +85,49 @@ TEST_CASE("plant fitness: the score is its terms combined, and a plant must stan
     CHECK(floating.score == 0.0);
 }
 
+TEST_CASE("plant fitness: a tip is fed by the lit faces nearest to it within its shoot's reach", "[fitness][plant]") {
+    MeshArrays sphere = make_icosphere(3);
+    for (Vec3& p : sphere.positions) p = 3.0 * p + Vec3(0, 0, 3);
+    const std::vector<double> overhead = light_per_face(sphere.view(), one_sun(90));
+    const double all = saturating_light(sphere.view(), overhead, 0.25);
+    const std::vector<Vec3> top_and_bottom = {Vec3(0, 0, 6), Vec3(0, 0, 0)};
+    // Reach enough for every face: the lit faces split between the tips, each to the nearer.
+    std::vector<double> shoots = shoot_light(sphere.view(), overhead, 0.25, top_and_bottom, 100.0);
+    REQUIRE(shoots.size() == 2);
+    CHECK(shoots[0] + shoots[1] == Approx(all).epsilon(1e-12));
+    CHECK(shoots[1] == 0.0);  // the bottom is in the sphere's own shade
+    CHECK(shoots[0] == Approx(all).epsilon(1e-12));
+    // A short reach feeds the top tip only from the cap around it: the faces
+    // with centroids within 2 of (0, 0, 6), a cap of height 2/3 of 9 units² in full sun.
+    shoots = shoot_light(sphere.view(), overhead, 0.25, top_and_bottom, 2.0);
+    CHECK(shoots[0] > 0.6 * 2 * M_PI * 3 * (2.0 / 3.0) * 0.8);
+    CHECK(shoots[0] < 0.5 * all);
+    // A tip out of reach of every lit face is fed nothing.
+    CHECK(shoot_light(sphere.view(), overhead, 0.25, {Vec3(20, 0, 3)}, 2.0) == std::vector<double>{0.0});
+}
+
+TEST_CASE("plant fitness: a tip bears by its shoot's light; H = 0 bears every tip in full", "[fitness][plant]") {
+    MeshArrays sphere = make_icosphere(3);
+    for (Vec3& p : sphere.positions) p = 2.0 * p + Vec3(5, -3, 2);  // resting on z = 0
+    PlantFitnessParams params;
+    params.light = one_sun(90);
+    params.shoot_half_light = 0.0;
+    const PlantScore full = plant_score(sphere.view(), params);
+    REQUIRE(full.tips >= 1);
+    CHECK(full.bearing_tips == full.tips);
+    double prev_reproduction = full.reproduction, prev_bearing = full.bearing_tips;
+    for (double H : {0.5, 2.0, 8.0, 1000.0}) {
+        params.shoot_half_light = H;
+        const PlantScore s = plant_score(sphere.view(), params);
+        CHECK(s.light == Approx(full.light).epsilon(1e-12));  // the light term is the whole plant's
+        CHECK(s.bearing_tips < prev_bearing);
+        CHECK(s.reproduction < prev_reproduction);
+        CHECK(s.score == Approx(std::sqrt(s.light * s.reproduction) / s.cost));
+        prev_reproduction = s.reproduction, prev_bearing = s.bearing_tips;
+    }
+    CHECK(prev_bearing < 0.05 * full.tips);
+}
+
 TEST_CASE("plant fitness: weight held away from the foot costs more", "[fitness][plant]") {
     // A post with a box on top, once centred and once held 6 units out on one side.
     const MeshArrays post = make_box({-0.5, -0.5, 0}, {0.5, 0.5, 8});
@@ -110,6 +154,8 @@ TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][c
     CHECK(resolved["half_saturation"] == 0.25);
     CHECK(resolved["moment_cost"] == 0.0002);
     CHECK(resolved["root_height"] == 0.1);
+    CHECK(resolved["shoot_radius"] == 2.5);
+    CHECK(resolved["shoot_half_light"] == 4.0);
     CHECK(resolved["spacing"] == 0.25);
 
     const auto first_issue = [](const char* text) {
@@ -121,5 +167,7 @@ TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][c
     };
     CHECK(first_issue(R"({"type": "plant", "half_saturation": 0})").starts_with("fitness.half_saturation"));
     CHECK(first_issue(R"({"type": "plant", "moment_cost": -1})").starts_with("fitness.moment_cost"));
+    CHECK(first_issue(R"({"type": "plant", "shoot_radius": 0})").starts_with("fitness.shoot_radius"));
+    CHECK(first_issue(R"({"type": "plant", "shoot_half_light": -1})").starts_with("fitness.shoot_half_light"));
     CHECK(first_issue(R"({"type": "plant", "trunk_target": 0.2})").starts_with("fitness.trunk_target: unknown key"));
 }
