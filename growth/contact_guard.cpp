@@ -99,18 +99,25 @@ void ContactGuard::test_face_edges(int f, int g, const std::vector<Vec3>& x, con
         if (u == t[0] || u == t[1] || u == t[2]) return;  // a fan's pair (2.)
     if (!(displaced_[s[0]] | displaced_[s[1]] | displaced_[s[2]] | displaced_[t[0]] | displaced_[t[1]] | displaced_[t[2]]))
         return;
-    if (!swept_[f].inflated(r).overlaps(swept_[g])) return;  // never within r of each other
+    if (!swept_[f].overlaps(swept_[g])) return;  // no edge of one meets an edge of the other's box
+    const auto edge_box = [&](int u, int w) { return Box3::of(before[u], x[u], x[u]).merged(Box3::of(before[w], x[w], x[w])); };
+    Box3 edges_f[3], edges_g[3];
+    for (int k = 0; k < 3; ++k) {
+        edges_f[k] = edge_box(s[k], s[(k + 1) % 3]);
+        edges_g[k] = edge_box(t[k], t[(k + 1) % 3]);
+    }
     for (int i = 0; i < 3; ++i)
         for (int j = 0; j < 3; ++j) {
             const int a = s[i], b = s[(i + 1) % 3], c = t[j], d = t[(j + 1) % 3];
             if (!(displaced_[a] | displaced_[b] | displaced_[c] | displaced_[d])) continue;
+            if (!edges_f[i].overlaps(edges_g[j])) continue;  // they never meet
             if (!edges_cross(a, b, c, d, x, before, r)) continue;
             for (const int u : {a, b, c, d})
                 if (displaced_[u]) refuse_[u] = 1;
         }
 }
 
-void ContactGuard::test_edges_near(int f, bool all, const std::vector<Vec3>& x, const std::vector<Vec3>& before,
+void ContactGuard::test_edges_near(int f, const std::vector<Vec3>& x, const std::vector<Vec3>& before,
                                    const std::vector<Face>& faces, double r) {
     face_seen_.resize(faces.size(), 0);
     if (++face_query_ == 0) {  // wrapped: every mark is stale
@@ -120,8 +127,6 @@ void ContactGuard::test_edges_near(int f, bool all, const std::vector<Vec3>& x, 
     const auto test = [&](int g) {
         if (g == f || face_seen_[g] == face_query_) return;
         face_seen_[g] = face_query_;
-        // A pair of moving faces is met from both: tested from the first.
-        if (!all && face_moving_[g] && g < f) return;
         test_face_edges(f, g, x, before, faces, r);
     };
     moving_grid_.for_each_meeting(boxes_[f], test);
@@ -164,9 +169,6 @@ void ContactGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before, s
         moving_grid_.for_each_meeting(path, test);
         if (displaced_[v]) still_grid_.for_each_meeting(path, test);
     }
-    // Edges of faces apart (no common vertex), one of them moving.
-    for (int f = 0; f < F; ++f)
-        if (face_moving_[f]) test_edges_near(f, false, x, before, faces, r);
     // 2. Every fan the move changes must stay certified (no two of its faces
     // can meet): the faces around a vertex are too close for the distance.
     check_.assign(V, 0);
@@ -220,7 +222,9 @@ void ContactGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before, s
             };
             moving_grid_.for_each_meeting(boxes_[f], test);
             still_grid_.for_each_meeting(boxes_[f], test);
-            test_edges_near(f, true, x, before, faces, r);
+            // Edges: a face with a corner gone back is a new triangle, whose
+            // edges its moving corners may sweep through another surface's.
+            test_edges_near(f, x, before, faces, r);
         }
         refuse_tangled_fans(mesh, check_, neighbour_offsets, neighbours);
     }

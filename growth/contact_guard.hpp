@@ -58,9 +58,8 @@ private:
     // displaced ends of both edges.
     void test_face_edges(int f, int g, const std::vector<Vec3>& x, const std::vector<Vec3>& before,
                          const std::vector<Face>& faces, double r);
-    // test_face_edges of f against every face listed near it (`all`: also
-    // the moving faces before f, which otherwise test f themselves).
-    void test_edges_near(int f, bool all, const std::vector<Vec3>& x, const std::vector<Vec3>& before,
+    // test_face_edges of f against every face listed near it.
+    void test_edges_near(int f, const std::vector<Vec3>& x, const std::vector<Vec3>& before,
                          const std::vector<Face>& faces, double r);
     // Whether vertex v and face f form a contact pair (v not in f): the
     // corners of f that carry the nearest point (bit k: corner k), else 0.

@@ -191,22 +191,31 @@ struct ReferenceGrowth {
                     for (int k = 0; k < 3; ++k)
                         if ((corners >> k & 1U) != 0 && displaced[f[k]]) more.insert(f[k]);
                 }
-            // Edges of two faces with no common vertex that crossed.
-            for (std::size_t f = 0; f < faces.size(); ++f)
+            // Edges of two faces with no common vertex that crossed, in the
+            // rounds after the first (a corner went back).
+            for (std::size_t f = 0; f < faces.size() && involving != nullptr; ++f)
                 for (std::size_t g = f + 1; g < faces.size(); ++g) {
                     const Face &F1 = faces[f], &F2 = faces[g];
-                    bool common = false, any = false, involved = involving == nullptr;
+                    bool common = false, any = false, involved = false;
                     for (const int u : F1)
                         for (const int w : F2) common |= u == w;
                     for (const int u : {F1[0], F1[1], F1[2], F2[0], F2[1], F2[2]}) {
                         any |= displaced[u];
-                        involved |= involving != nullptr && involving->count(u) > 0;
+                        involved |= involving->count(u) > 0;
                     }
                     if (common || !any || !involved) continue;
                     for (int i = 0; i < 3; ++i)
                         for (int j = 0; j < 3; ++j) {
                             const int a = F1[i], b = F1[(i + 1) % 3], c = F2[j], d = F2[(j + 1) % 3];
                             if (!displaced[a] && !displaced[b] && !displaced[c] && !displaced[d]) continue;
+                            // The edges' boxes over the move (x⁰ to x) meet.
+                            bool apart = false;
+                            for (int axis = 0; axis < 3; ++axis) {
+                                const auto lo = [&](int u, int w) { return std::min({before[u][axis], x[u][axis], before[w][axis], x[w][axis]}); };
+                                const auto hi = [&](int u, int w) { return std::max({before[u][axis], x[u][axis], before[w][axis], x[w][axis]}); };
+                                apart |= hi(a, b) < lo(c, d) || hi(c, d) < lo(a, b);
+                            }
+                            if (apart) continue;
                             const auto side = [&](const std::vector<Vec3>& q) {
                                 return (q[b] - q[a]).cross(q[d] - q[c]).dot(q[c] - q[a]);
                             };

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The contact rule's cost, two binaries side by side (morphogen bench, one thread).
 
-Usage: side_by_side.py OLD_MORPHOGEN NEW_MORPHOGEN [REPEAT]
+Usage: side_by_side.py OLD_MORPHOGEN NEW_MORPHOGEN [REPEAT [SETTINGS]]
+SETTINGS: "all" (default) or "tree" (configs/tree.json only).
 
 For configs/tree.json and the default settings in both modes: the bench of
 growth.collisions "allow" and "touch" with each binary, passes interleaved
@@ -45,6 +46,8 @@ def main():
     tree.pop("$schema", None)
     settings = [("tree.json (branching)", tree), ("default, paper", {}),
                 ("default, branching", {"growth": {"mode": "branching"}})]
+    if len(sys.argv) > 4 and sys.argv[4] == "tree":
+        settings = settings[:1]
     print("| settings | binary | allow wall_s_1t | touch wall_s_1t | touch / allow | touch collide_fraction | touch mean vertices |")
     print("|---|---|---|---|---|---|---|")
     for name, base in settings:
@@ -64,7 +67,7 @@ def main():
         ratios = []
         for seed in range(1, 33):
             times = {rule: bench(binary, with_rule(tree, rule), "--genomes", "1", "--seed", str(seed),
-                                 "--repeat", "3")["wall_s_1t"] for rule in ("allow", "touch")}
+                                 "--repeat", str(repeat))["wall_s_1t"] for rule in ("allow", "touch")}
             ratios.append(times["touch"] / times["allow"])
         ratios.sort()
         print(f"\ntree.json, {b}, per genome touch / allow: median {statistics.median(ratios):.2f}, "
