@@ -39,35 +39,3 @@ TriangleDistance distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& 
 }
 
 }  // namespace morphogen
-
-namespace morphogen {
-
-double segment_distance_squared(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
-    const Vec3 d1 = p1 - p0, d2 = q1 - q0, r = p0 - q0;
-    const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
-    double s = 0.0, t = 0.0;
-    if (a <= 0.0 && e <= 0.0) return r.squaredNorm();
-    if (a <= 0.0) {
-        t = std::clamp(f / e, 0.0, 1.0);
-    } else {
-        const double c = d1.dot(r);
-        if (e <= 0.0) {
-            s = std::clamp(-c / a, 0.0, 1.0);
-        } else {
-            const double b = d1.dot(d2), denominator = a * e - b * b;
-            // Parallel segments (denominator 0): any s, here 0.
-            s = denominator > 0.0 ? std::clamp((b * f - c * e) / denominator, 0.0, 1.0) : 0.0;
-            t = (b * s + f) / e;
-            if (t < 0.0) {
-                t = 0.0;
-                s = std::clamp(-c / a, 0.0, 1.0);
-            } else if (t > 1.0) {
-                t = 1.0;
-                s = std::clamp((b - c) / a, 0.0, 1.0);
-            }
-        }
-    }
-    return (p0 + s * d1 - (q0 + t * d2)).squaredNorm();
-}
-
-}  // namespace morphogen

@@ -17,11 +17,3 @@ struct TriangleDistance {
 TriangleDistance distance_to_triangle(const Vec3& p, const Vec3& a, const Vec3& b, const Vec3& c);
 
 }  // namespace morphogen
-
-namespace morphogen {
-
-// The squared distance between the closed segments p0-p1 and q0-q1,
-// degenerate ones included (Ericson, Real-Time Collision Detection, §5.1.9).
-double segment_distance_squared(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1);
-
-}  // namespace morphogen

@@ -33,11 +33,10 @@ void ContactGrid::for_each_cell(const Box3& box, Fn&& fn) const {
             for (int k = lo[2]; k <= hi[2]; ++k) fn((i * cells_[1] + j) * cells_[2] + k);
 }
 
-void ContactGrid::build(const std::vector<Box3>& boxes, const std::vector<int>& ids, double cell_size) {
+void ContactGrid::build(const std::vector<Box3>& boxes, double cell_size) {
     Box3 bounds{Vec3::Zero(), Vec3::Zero()};
     if (!boxes.empty()) bounds = boxes.front();
     for (const Box3& box : boxes) bounds = bounds.merged(box);
-    bounds_ = boxes.empty() ? Box3{Vec3::Ones(), Vec3::Zero()} : bounds;
     origin_ = bounds.lo;
     const Vec3 size = bounds.hi - bounds.lo;
     const double budget = kMaxCellsPerBox * static_cast<double>(std::max<std::size_t>(boxes.size(), 1));
@@ -55,7 +54,7 @@ void ContactGrid::build(const std::vector<Box3>& boxes, const std::vector<int>& 
     std::vector<std::uint32_t>& next = fill_cursor_;
     next.assign(start_.begin(), start_.end() - 1);
     for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const Entry entry{outward(boxes[i]), ids[i]};
+        const Entry entry{outward(boxes[i]), static_cast<int>(i)};
         for_each_cell(boxes[i], [&](int c) { entries_[next[c]++] = entry; });
     }
     late_head_.assign(count, -1);
@@ -64,7 +63,6 @@ void ContactGrid::build(const std::vector<Box3>& boxes, const std::vector<int>& 
 
 void ContactGrid::insert(int id, const Box3& box) {
     const Entry entry{outward(box), id};
-    bounds_ = bounds_.lo.x() > bounds_.hi.x() ? box : bounds_.merged(box);
     for_each_cell(box, [&](int c) {
         late_.push_back({entry, late_head_[c]});
         late_head_[c] = static_cast<int>(late_.size()) - 1;

@@ -19,19 +19,16 @@ namespace morphogen {
 class ContactGrid {
 public:
 
-    // Lists boxes[i] as id ids[i] (as many), and nothing else, in cells of
-    // edge about `cell_size` (> 0; made larger where the bounds would need
-    // too many).
-    void build(const std::vector<Box3>& boxes, const std::vector<int>& ids, double cell_size);
+    // Lists boxes[i] as id i, and nothing else, in cells of edge about
+    // `cell_size` (> 0; made larger where the bounds would need too many).
+    void build(const std::vector<Box3>& boxes, double cell_size);
     // Lists `box` as `id` too (id may be new, one past the last, or listed).
     void insert(int id, const Box3& box);
 
     // Calls fn(id) for every entry whose box meets `box` (closed), once per
     // cell they share: an id may come more than once, also with an older box.
-    // A box beyond every listed box costs one test.
     template <class Fn>
     void for_each_meeting(const Box3& box, Fn&& fn) const {
-        if (!bounds_.overlaps(box)) return;  // nothing listed there: no cell to read
         const FloatBox query = outward(box);
         const std::array<int, 3> lo = cell_of(box.lo), hi = cell_of(box.hi);
         for (int i = lo[0]; i <= hi[0]; ++i)
@@ -77,7 +74,6 @@ private:
     template <class Fn>
     void for_each_cell(const Box3& box, Fn&& fn) const;
 
-    Box3 bounds_{Vec3::Ones(), Vec3::Zero()};  // holds every listed box (empty: lo > hi)
     Vec3 origin_ = Vec3::Zero();
     double inverse_cell_ = 1.0;
     std::array<int, 3> cells_{1, 1, 1};

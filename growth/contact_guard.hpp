@@ -45,47 +45,23 @@ private:
     // Lists every face's box over the move (before to now), grown by r.
     void list_faces(const std::vector<Vec3>& now, const std::vector<Vec3>& before, const std::vector<Face>& faces,
                     double r);
-    // Vertex v against face f (§5.7.1, 1): unless v is in f or none of the
-    // four is displaced, a contact refuses v and the nearest point's corners,
-    // those displaced.
-    void test_pair(int v, int f, const std::vector<Vec3>& x, const std::vector<Vec3>& before,
-                   const std::vector<Face>& faces, double r);
-    // Whether edges a-b and c-d crossed over the move (§5.7.1, 1).
-    static bool edges_cross(int a, int b, int c, int d, const std::vector<Vec3>& now, const std::vector<Vec3>& before,
-                            double r);
-    // Every edge of face f against every edge of face g, if the two have no
-    // common vertex and a corner is displaced: a crossing refuses the
-    // displaced ends of both edges.
-    void test_face_edges(int f, int g, const std::vector<Vec3>& x, const std::vector<Vec3>& before,
-                         const std::vector<Face>& faces, double r);
-    // test_face_edges of f against every face listed near it.
-    void test_edges_near(int f, const std::vector<Vec3>& x, const std::vector<Vec3>& before,
-                         const std::vector<Face>& faces, double r);
     // Whether vertex v and face f form a contact pair (v not in f): the
     // corners of f that carry the nearest point (bit k: corner k), else 0.
     static unsigned touches(int v, int f, const std::vector<Vec3>& now, const std::vector<Vec3>& before,
                             const std::vector<Face>& faces, double r);
-    // Refuses the displaced vertices of every fan of a vertex in `check` that is
+    // Refuses the moving vertices of every fan of a vertex in `check` that is
     // not certified (mesh/fan_certificate.hpp) at the mesh's positions.
     void refuse_tangled_fans(const TriMesh& mesh, const std::vector<char>& check, std::span<const int> neighbour_offsets,
                              std::span<const int> neighbours);
 
-    ContactGrid moving_grid_, still_grid_;  // faces with a moving corner, the others
-    std::vector<Box3> boxes_;   // per face: the box it is listed with (its swept box grown by r)
-    std::vector<Box3> swept_;   // per face: its box over the move
-    std::vector<Box3> grid_boxes_;   // list_faces's scratch: one grid's boxes
-    std::vector<int> grid_ids_;      // and their faces
-    std::vector<char> displaced_;    // per vertex: away from `before` now
-    std::vector<char> face_moving_;  // per face: has a corner that the proposal moved
+    ContactGrid grid_;
+    std::vector<Box3> boxes_;   // per face: the box it is listed with
+    std::vector<char> moving_;       // per vertex: moved by the proposal
+    std::vector<char> face_moving_;  // per face: has a corner that moved
     std::vector<char> refuse_;       // per vertex: to go back (in a contact pair or a tangled fan, and moving)
-    std::vector<char> check_;        // per vertex: whose fan to certify (2: went back this round)
-    std::vector<int> reverted_;      // the vertices going back in this round
+    std::vector<char> check_;        // per vertex: whose fan to certify
     std::vector<unsigned> seen_;  // per face: the query that met it last (allows)
     unsigned query_ = 0;
-    std::vector<unsigned> vertex_seen_;  // per vertex: the face query that met it last (rounds)
-    unsigned vertex_query_ = 0;
-    std::vector<unsigned> face_seen_;  // per face: the edge query that met it last
-    unsigned face_query_ = 0;
     std::vector<Vec3> spokes_;
     bool listed_ = false;  // whether the grid describes this step's faces
 };

@@ -137,137 +137,60 @@ struct ReferenceGrowth {
         return nearest.distance < r ? nearest.corners : 0;
     }
 
-    // Distance between the closed segments p0-p1 and q0-q1: the closest pair
-    // inside both where the lines' normal equations have one, else the
-    // nearest of the four ends to the other segment.
-    static double segment_distance(const Vec3& p0, const Vec3& p1, const Vec3& q0, const Vec3& q1) {
-        const auto to_segment = [](const Vec3& q, const Vec3& s, const Vec3& e) {
-            const double length2 = (e - s).squaredNorm();
-            const double u = length2 > 0 ? std::clamp((q - s).dot(e - s) / length2, 0.0, 1.0) : 0.0;
-            return (q - (s + u * (e - s))).norm();
-        };
-        double best = std::min({to_segment(p0, q0, q1), to_segment(p1, q0, q1), to_segment(q0, p0, p1), to_segment(q1, p0, p1)});
-        const Vec3 u = p1 - p0, v = q1 - q0, w = p0 - q0;
-        const double a = u.dot(u), b = u.dot(v), c = v.dot(v), d = u.dot(w), e = v.dot(w);
-        const double det = a * c - b * b;
-        if (det > 0) {
-            const double s = (b * e - c * d) / det, t = (a * e - b * d) / det;
-            if (s >= 0 && s <= 1 && t >= 0 && t <= 1) best = std::min(best, (p0 + s * u - (q0 + t * v)).norm());
-        }
-        return best;
-    }
-
     // §5.7.1: contact pairs at the proposed positions, then tangled fans;
-    // then rounds: the refused go back, and every pair and fan with one of
-    // them is tested again at the positions now, until no round refuses
-    // more; every refused vertex goes dormant.
+    // the refused go back, the fans around them are checked once more; every
+    // refused vertex goes dormant.
     void settle_contacts(const std::vector<Vec3>& before, const std::vector<std::set<int>>& nb, double r) {
         const int V = static_cast<int>(x.size());
         if (active.empty() && touched.empty()) touched.assign(V, 0);
-        std::vector<bool> displaced(V);
-        for (int i = 0; i < V; ++i) displaced[i] = x[i] != before[i];
+        std::vector<bool> moving(V);
+        for (int i = 0; i < V; ++i) moving[i] = x[i] != before[i];
         std::set<int> refuse;
-        // The pairs with a vertex in `involving` (every pair when null).
-        const auto contacts = [&](const std::set<int>* involving) {
-            std::set<int> more;
-            for (int v = 0; v < V; ++v)
-                for (const Face& f : faces) {
-                    const auto [a, b, c] = f;
-                    if (v == a || v == b || v == c) continue;
-                    if (!displaced[v] && !displaced[a] && !displaced[b] && !displaced[c]) continue;
-                    if (involving != nullptr && !involving->count(v) && !involving->count(a) && !involving->count(b) &&
-                        !involving->count(c))
-                        continue;
-                    unsigned corners = contact_near(x[v], x[a], x[b], x[c], r);
-                    const double s0 = (before[b] - before[a]).cross(before[c] - before[a]).dot(before[v] - before[a]);
-                    const double s1 = (x[b] - x[a]).cross(x[c] - x[a]).dot(x[v] - x[a]);
-                    if (corners == 0 && ((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0))) {
-                        const double t = s0 / (s0 - s1);
-                        const auto at = [&](int u) { return Vec3(before[u] + t * (x[u] - before[u])); };
-                        corners = contact_near(at(v), at(a), at(b), at(c), r);
-                    }
-                    if (corners == 0) continue;
-                    if (displaced[v]) more.insert(v);
-                    for (int k = 0; k < 3; ++k)
-                        if ((corners >> k & 1U) != 0 && displaced[f[k]]) more.insert(f[k]);
+        for (int v = 0; v < V; ++v)
+            for (const Face& f : faces) {
+                const auto [a, b, c] = f;
+                if (v == a || v == b || v == c) continue;
+                if (!moving[v] && !moving[a] && !moving[b] && !moving[c]) continue;
+                unsigned corners = contact_near(x[v], x[a], x[b], x[c], r);
+                const double s0 = (before[b] - before[a]).cross(before[c] - before[a]).dot(before[v] - before[a]);
+                const double s1 = (x[b] - x[a]).cross(x[c] - x[a]).dot(x[v] - x[a]);
+                if (corners == 0 && ((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0))) {
+                    const double t = s0 / (s0 - s1);
+                    const auto at = [&](int u) { return Vec3(before[u] + t * (x[u] - before[u])); };
+                    corners = contact_near(at(v), at(a), at(b), at(c), r);
                 }
-            // Edges of two faces with no common vertex that crossed, in the
-            // rounds after the first (a corner went back).
-            for (std::size_t f = 0; f < faces.size() && involving != nullptr; ++f)
-                for (std::size_t g = f + 1; g < faces.size(); ++g) {
-                    const Face &F1 = faces[f], &F2 = faces[g];
-                    bool common = false, any = false, involved = false;
-                    for (const int u : F1)
-                        for (const int w : F2) common |= u == w;
-                    for (const int u : {F1[0], F1[1], F1[2], F2[0], F2[1], F2[2]}) {
-                        any |= displaced[u];
-                        involved |= involving->count(u) > 0;
-                    }
-                    if (common || !any || !involved) continue;
-                    for (int i = 0; i < 3; ++i)
-                        for (int j = 0; j < 3; ++j) {
-                            const int a = F1[i], b = F1[(i + 1) % 3], c = F2[j], d = F2[(j + 1) % 3];
-                            if (!displaced[a] && !displaced[b] && !displaced[c] && !displaced[d]) continue;
-                            // The edges' boxes over the move (x⁰ to x) meet.
-                            bool apart = false;
-                            for (int axis = 0; axis < 3; ++axis) {
-                                const auto lo = [&](int u, int w) { return std::min({before[u][axis], x[u][axis], before[w][axis], x[w][axis]}); };
-                                const auto hi = [&](int u, int w) { return std::max({before[u][axis], x[u][axis], before[w][axis], x[w][axis]}); };
-                                apart |= hi(a, b) < lo(c, d) || hi(c, d) < lo(a, b);
-                            }
-                            if (apart) continue;
-                            const auto side = [&](const std::vector<Vec3>& q) {
-                                return (q[b] - q[a]).cross(q[d] - q[c]).dot(q[c] - q[a]);
-                            };
-                            const double s0 = side(before), s1 = side(x);
-                            if (!((s0 < 0 && s1 > 0) || (s0 > 0 && s1 < 0))) continue;
-                            const auto scale = [&](const std::vector<Vec3>& q) {
-                                return (q[b] - q[a]).norm() * (q[d] - q[c]).norm() * (q[c] - q[a]).norm();
-                            };
-                            if (!(std::abs(s0) > 1e-6 * scale(before) && std::abs(s1) > 1e-6 * scale(x))) continue;
-                            const double t = s0 / (s0 - s1);
-                            const auto at = [&](int u) { return Vec3(before[u] + t * (x[u] - before[u])); };
-                            if (!(segment_distance(at(a), at(b), at(c), at(d)) < r)) continue;
-                            for (const int u : {a, b, c, d})
-                                if (displaced[u]) more.insert(u);
-                        }
-                }
-            refuse.insert(more.begin(), more.end());
-        };
-        // A fan not certified at the positions now: its displaced vertices stay.
+                if (corners == 0) continue;
+                if (moving[v]) refuse.insert(v);
+                for (int k = 0; k < 3; ++k)
+                    if ((corners >> k & 1U) != 0 && moving[f[k]]) refuse.insert(f[k]);
+            }
+        // A fan not certified at the positions now: its moving vertices stay.
         const auto refuse_tangled = [&](const std::set<int>& check) {
             const TriMesh mesh = TriMesh::from_arrays({x, faces}, "reference");
             std::vector<Vec3> spokes;
             std::set<int> more;
             for (const int v : check) {
                 if (fan_certified(mesh, v, spokes)) continue;
-                if (displaced[v]) more.insert(v);
+                if (moving[v]) more.insert(v);
                 for (const int u : nb[v])
-                    if (displaced[u]) more.insert(u);
+                    if (moving[u]) more.insert(u);
             }
             refuse.insert(more.begin(), more.end());
         };
-        contacts(nullptr);
         std::set<int> changed_fans;
         for (int v = 0; v < V; ++v)
-            if (displaced[v] || std::any_of(nb[v].begin(), nb[v].end(), [&](int u) { return displaced[u]; }))
+            if (moving[v] || std::any_of(nb[v].begin(), nb[v].end(), [&](int u) { return moving[u]; }))
                 changed_fans.insert(v);
         refuse_tangled(changed_fans);
-        for (;;) {
-            std::set<int> back, around;
-            for (const int u : refuse)
-                if (displaced[u]) back.insert(u);
-            if (back.empty()) break;
-            for (const int u : back) {
-                x[u] = before[u];
-                displaced[u] = false;
-                around.insert(u);
-                around.insert(nb[u].begin(), nb[u].end());
-            }
-            contacts(&back);
-            refuse_tangled(around);
-        }
+        std::set<int> around_refused;
         for (const int u : refuse) {
+            x[u] = before[u];
+            around_refused.insert(u);
+            around_refused.insert(nb[u].begin(), nb[u].end());
+        }
+        refuse_tangled(around_refused);
+        for (const int u : refuse) {
+            x[u] = before[u];
             if (!active.empty()) active[u] = 0;
             else touched[u] = 1;
         }
