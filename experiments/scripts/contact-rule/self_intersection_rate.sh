@@ -2,6 +2,7 @@
 # The share of random genomes whose grown mesh self-intersects (CGAL's check,
 # the fitness "self_intersecting"), for each collision rule, mode and size.
 # Usage: self_intersection_rate.sh MORPHOGEN [GENOMES] [RULES...]
+# MODES and SIZES (environment) pick rows, e.g. MODES=branching SIZES=default.
 # One evolve run per row: GENOMES random genomes (generation 0, init_range 2,
 # seed 1), scored 1 when self-intersecting; prints a Markdown table row each.
 set -euo pipefail
@@ -14,8 +15,8 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 echo "| mode | settings | collisions | self-intersecting | rate | mean vertices | seconds |"
 echo "|---|---|---|---|---|---|---|"
-for mode in paper branching; do
-  for size in default tree; do
+for mode in ${MODES:-paper branching}; do
+  for size in ${SIZES:-default tree}; do
     for rule in "${rules[@]}"; do
       growth="\"mode\": \"$mode\", \"collisions\": \"$rule\""
       # CONTACT (environment): growth.contact_distance of the "touch" rows.
