@@ -8,7 +8,10 @@
 // the tip down the branch costs almost nothing and the tips went first (LOD2
 // of a tree 7 % of its diagonal away). Here the cost is the larger of
 //   - the farthest grown vertex merged into the collapsed edge's vertices
-//     from the triangles around the new vertex (grown mesh -> level), and
+//     from the triangles around the new vertex, and of those merged into
+//     the vertices around the edge from the new triangles and their own
+//     (grown mesh -> level; without the second, later collapses eroded thin
+//     branches whose tips an earlier one had merged), and
 //   - the farthest of the new vertex, its new edges' midpoints and its new
 //     triangles' centroids from the grown mesh (level -> grown mesh, by an
 //     AABB tree of LOD0),
@@ -18,6 +21,7 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
 #include <cmath>
@@ -89,13 +93,33 @@ public:
                 Point((a.x() + q.x() + c.x()) / 3, (a.y() + q.y() + c.y()) / 3, (a.z() + q.z() + c.z()) / 3)));
         }
         if (star.empty()) return {};
+        const auto nearest = [](const Point& p, const std::vector<Triangle>& near, double bound) {
+            double best = std::numeric_limits<double>::infinity();
+            for (const Triangle& t : near)
+                if ((best = std::min(best, CGAL::squared_distance(p, t))) <= bound) break;
+            return best;
+        };
         double grown_to_level = 0;
         for (const auto v : {profile.v0(), profile.v1()})
-            for (const Point& p : (*merged_)[v.idx()]) {
-                double nearest = std::numeric_limits<double>::infinity();
-                for (const Triangle& t : star) nearest = std::min(nearest, CGAL::squared_distance(p, t));
-                grown_to_level = std::max(grown_to_level, nearest);
+            for (const Point& p : (*merged_)[v.idx()]) grown_to_level = std::max(grown_to_level, nearest(p, star, grown_to_level));
+        // The grown vertices merged into the vertices around the edge lay
+        // near triangles the collapse moves: their distance to the new star
+        // and their own unmoved triangles.
+        const auto& mesh = profile.surface_mesh();
+        std::vector<Triangle> near;
+        for (const auto u : profile.link()) {
+            near.assign(star.begin(), star.end());
+            for (const auto f : CGAL::faces_around_target(halfedge(u, mesh), mesh)) {
+                if (f == boost::graph_traits<Surface>::null_face()) continue;
+                const auto h = halfedge(f, mesh);
+                const auto a = source(h, mesh), b = target(h, mesh), c = target(next(h, mesh), mesh);
+                if (a == profile.v0() || a == profile.v1() || b == profile.v0() || b == profile.v1() ||
+                    c == profile.v0() || c == profile.v1())
+                    continue;
+                near.emplace_back(get(vpm, a), get(vpm, b), get(vpm, c));
             }
+            for (const Point& p : (*merged_)[u.idx()]) grown_to_level = std::max(grown_to_level, nearest(p, near, grown_to_level));
+        }
         return std::sqrt(std::max(level_to_grown, grown_to_level)) + tie_weight_ * *base;
     }
 
