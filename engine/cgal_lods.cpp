@@ -3,6 +3,7 @@
 #include "engine/plant_lods.hpp"
 
 #include "base/errors.hpp"
+#include "engine/cgal_lod_distance_cost.hpp"
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
@@ -62,16 +63,24 @@ MeshArrays to_arrays(Surface& surface) {
     return mesh;
 }
 
+double diagonal(MeshView mesh) {
+    Vec3 lo = mesh.positions[0], hi = mesh.positions[0];
+    for (const Vec3& p : mesh.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+    return std::max((hi - lo).norm(), 1e-12);
+}
+
 // `mesh` collapsed to about `faces` triangles. A closed triangle mesh has
 // 3/2 edges per face and a collapse removes 3 edges (2 faces); CGAL stops
 // below the threshold, so 3/2 * faces + 1 stops at the first count <= faces.
 MeshArrays collapse_to(MeshView mesh, std::size_t faces) {
-    Surface surface = to_surface(mesh);
+    const Surface original = to_surface(mesh);
+    Surface surface = original;
     using Policies = SMS::GarlandHeckbert_triangle_policies<Surface, Kernel>;
     Policies policies(surface);
     const SMS::Bounded_normal_change_placement<Policies::Get_placement> placement(policies.get_placement());
+    const lods::DistanceCost<Surface, Kernel, Policies::Get_cost> cost(original, policies.get_cost(), 1e-3 / diagonal(mesh));
     const SMS::Count_stop_predicate<Surface> stop(faces * 3 / 2 + 1);
-    SMS::edge_collapse(surface, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement));
+    SMS::edge_collapse(surface, stop, CGAL::parameters::get_cost(cost).get_placement(placement));
     return to_arrays(surface);
 }
 

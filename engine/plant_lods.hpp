@@ -1,11 +1,12 @@
 #pragma once
 // Levels of detail of a plant (`--lods N`; docs/file-formats.md, "Levels of
-// detail"): CGAL's edge collapse with Garland-Heckbert triangle policies
-// (with plane quadrics a thin branch barely resists a vertex sliding along
-// it, and one plant lost a whole branch), the normal change of each collapse bounded so
-// no triangle folds over. Each
-// level keeps the mesh closed and manifold (an edge collapse on CGAL's
-// Surface_mesh keeps the link condition).
+// detail"): CGAL's edge collapse, each collapse costed by how far it takes
+// the surface from LOD0 in both directions (cgal_lod_distance_cost.hpp; the
+// Garland-Heckbert quadric cost alone let the tips of thin branches slide
+// away), placed by Garland-Heckbert's triangle quadrics with the normal
+// change bounded so no triangle folds over. Each level keeps the mesh closed
+// and manifold (an edge collapse on CGAL's Surface_mesh keeps the link
+// condition).
 #include "mesh/mesh.hpp"
 
 #include <span>

@@ -58,6 +58,7 @@ struct LodStats {
 };
 constexpr std::size_t kLarge = 1000;
 
+
 // Grows genomes first .. first + count - 1 and checks their three levels:
 // each closed and manifold, about half the triangles of the one before
 // (every plant), and their distances from LOD0 (counted, see the tests).
@@ -117,27 +118,52 @@ TEST_CASE("LOD0 is closed and manifold as grown", "[engine][lods]") {
     CHECK_FALSE(is_closed_manifold(open.view()));
 }
 
-// About 9 s of one core. Every level is closed, manifold and about half the
-// one before. The distance bounds are not met by every plant: plants of a few
-// dozen triangles (the seed barely grown) lose whole lobes when halved, and
-// thin branches lose their tips. The counts guard the figures in
-// docs/file-formats.md with one plant of slack: CGAL samples the distance, and
-// a plant at 1.00 % falls on either side from run to run.
-TEST_CASE("levels of detail halve the triangles and their distances from LOD0 are counted (100 genomes)", "[engine][lods]") {
+// The bounds of docs/file-formats.md on two trees the earlier method
+// (Garland-Heckbert's quadric cost alone) took past them (genome 8: LOD1
+// 1.16 %, LOD2 2.05 %; genome 50: 1.98 % and 4.25 %), and the same levels
+// twice. About 10 s of one core.
+TEST_CASE("levels of detail of two trees stay within 1 % and 2 % of LOD0", "[engine][lods]") {
+    const GenomeGrower grower = tree_grower();
+    for (const std::uint64_t seed : {8, 50}) {
+        const GrowthState state = grower.grow(testing::random_test_genome(grower.layers(), seed).params);
+        const PlacedPlant placed = place_plant(state.mesh.view(), std::nullopt);
+        const MeshView lod0 = placed.mesh.view();
+        INFO("genome " << seed << ", " << lod0.faces.size() << " triangles");
+        const std::vector<MeshArrays> levels = simplify_lods(lod0, 3);
+        for (std::size_t i = 1; i < levels.size(); ++i) {
+            const MeshView level = levels[i].view();
+            INFO("LOD" << i);
+            CHECK(is_closed_manifold(level));
+            const double ratio = static_cast<double>(level.faces.size()) / static_cast<double>(levels[i - 1].faces.size());
+            CHECK(std::abs(ratio - 0.5) <= 0.05);
+            CHECK(hausdorff_distance(lod0, level) / diagonal(lod0) <= 0.01 * static_cast<double>(i));
+        }
+        if (seed != 50) continue;
+        const std::vector<MeshArrays> again = simplify_lods(lod0, 3);
+        for (std::size_t i = 0; i < levels.size(); ++i) {
+            CHECK(again[i].positions == levels[i].positions);
+            CHECK(again[i].faces == levels[i].faces);
+        }
+    }
+}
+
+// 100 genomes (slow: ctest -L slow, or test_engine "[lods-slow]"). Every
+// level is closed, manifold and about half the one before; the distances
+// are counted (experiments/2026-11-27-lod-bounds.md): plants of a few dozen
+// triangles (the seed barely grown) lose whole lobes when halved by any
+// method, and some trees at the 1,000-vertex cap stay over the bounds.
+// The guards are the earlier method's figures, which this one must not lose to.
+TEST_CASE("levels of detail of 100 random genomes halve, stay closed and are counted", "[.][lods-slow]") {
     LodStats stats;
     check_lods(GenomeGrower(NetworkParams{}, GrowthParams{}), 1, 50, stats);
     check_lods(tree_grower(), 1, 50, stats);
     WARN(stats);
     CHECK(stats.plants == 100);
     CHECK(stats.large >= 30);
-    CHECK(stats.large_over_bound[1] <= 12);
-    CHECK(stats.large_over_bound[2] <= 12);
-    CHECK(stats.over_bound[1] <= 30);
-    CHECK(stats.over_bound[2] <= 50);
-    CHECK(stats.large_worst[1] < 0.05);
-    CHECK(stats.large_worst[2] < 0.08);
-    // No level loses a whole branch (plane quadrics lost one: 71 %).
-    CHECK(stats.worst_hausdorff[2] < 0.25);
+    CHECK(stats.large_over_bound[1] <= 9);
+    CHECK(stats.large_over_bound[2] <= 11);
+    CHECK(stats.large_worst[1] < 0.0461);
+    CHECK(stats.large_worst[2] < 0.0741);
 }
 
 TEST_CASE("too many levels for a small plant are refused, naming --lods", "[engine][lods]") {
