@@ -1,7 +1,6 @@
 #include "report/report_plants.hpp"
 
 #include "base/errors.hpp"
-#include "engine/birth_steps.hpp"
 #include "engine/plant_export.hpp"
 #include "engine/plant_lods.hpp"
 #include "io/mesh_io.hpp"
@@ -17,16 +16,14 @@ int report_lod_count(std::size_t faces) {
 
 ReportPlant grow_report_plant(const ExperimentConfig& config, const GenomeGrower& grower,
                               const Individual& individual, std::optional<std::uint64_t> cell) {
-    BirthSteps births(grower.seed().mesh.num_vertices());  // the wind data's flutter
-    GrowthWorkspace workspace;
-    const Network network(Genome{grower.layers(), individual.params});
-    ReportPlant plant{grower.grow(network, workspace, births.observer()), {}, 0, {}};
+    DatedGrowth dated = grow_dated(grower, individual.params);  // birth steps: the wind data's flutter
+    ReportPlant plant{std::move(dated.state), {}, 0, {}};
     const MeshView mesh = plant.grown.mesh.view();
     PlantExportOptions options;
     options.wind = true;
     options.lods = report_lod_count(static_cast<std::size_t>(mesh.faces.size()));
     try {
-        plant.glb = plant_glb_bytes(GrownPlant{.mesh = mesh, .birth_steps = births.steps(), .steps = plant.grown.steps_done},
+        plant.glb = plant_glb_bytes(GrownPlant{.mesh = mesh, .birth_steps = dated.birth_steps, .steps = plant.grown.steps_done},
                                     birth_record(config, individual, config.qd.measure_names(), cell), options,
                                     "plant " + std::to_string(individual.id));
         plant.lods = options.lods;
