@@ -14,29 +14,11 @@ the median over genomes of touch / allow one-thread time, per binary.
 import json
 import os
 import statistics
-import subprocess
 import sys
-import tempfile
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)))))
-
-
-def bench(morphogen, config, *extra):
-    with tempfile.NamedTemporaryFile("w", suffix=".json", delete=False) as f:
-        json.dump(config, f)
-        path = f.name
-    try:
-        out = subprocess.run([morphogen, "bench", "--config", path, "--json", "--threads", "1", *extra],
-                             check=True, capture_output=True, text=True).stdout
-    finally:
-        os.unlink(path)
-    return json.loads(out)
-
-
-def with_rule(base, rule):
-    config = json.loads(json.dumps(base))
-    config.setdefault("growth", {})["collisions"] = rule
-    return config
+sys.path.insert(0, os.path.join(ROOT, "experiments", "scripts", "contact-rule"))
+from bench_rules import bench, with_rule  # noqa: E402  the first study's harness
 
 
 def main():
