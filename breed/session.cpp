@@ -210,6 +210,53 @@ void BreedSession::check_parents(const std::vector<std::string>& parents) const 
     }
 }
 
+struct BreedSession::Saved {
+    std::uint64_t next_plant = 0;
+    std::vector<BreedStep> steps;
+    std::size_t cursor = 0;
+    std::uint64_t choices = 0;
+    std::uint64_t choices_bytes = 0;
+    std::string choices_hash;
+};
+
+BreedSession::Saved BreedSession::saved_point() const {
+    return {next_plant_, steps_, cursor_, choices_, choices_file_->size(), choices_file_->hash_hex()};
+}
+
+void BreedSession::roll_back(const Saved& saved) {
+    // Plants only ever gain ids, numbered from next_plant_: drop the new ones
+    // and their files, so the directory holds only what state.json names.
+    std::erase_if(plants_, [&](const auto& entry) {
+        if (std::stoull(entry.first.substr(1)) < saved.next_plant) return false;
+        std::error_code ignored;  // best effort: a file never written is no loss
+        fs::remove(dir_ / "genomes" / (entry.first + ".genome.json"), ignored);
+        fs::remove(dir_ / "meshes" / (entry.first + ".glb"), ignored);
+        fs::remove(dir_ / "thumbs" / (entry.first + ".png"), ignored);
+        return true;
+    });
+    next_plant_ = saved.next_plant;
+    steps_ = saved.steps;
+    cursor_ = saved.cursor;
+    choices_ = saved.choices;
+    if (choices_file_->size() != saved.choices_bytes) {
+        // Cut the unsaved line off, so the next choice follows the last saved one.
+        const std::filesystem::path path = choices_file_->path();
+        choices_file_.reset();
+        choices_file_ = std::make_unique<AppendFile>(AppendFile::resume(path, saved.choices_bytes, saved.choices_hash));
+    }
+}
+
+template <class Change>
+void BreedSession::as_one_choice(Change&& change) {
+    const Saved saved = saved_point();
+    try {
+        change();
+    } catch (...) {
+        roll_back(saved);
+        throw;
+    }
+}
+
 void BreedSession::push_step(BreedStep step) {
     steps_.resize(cursor_ + 1);
     steps_.push_back(std::move(step));
@@ -218,7 +265,7 @@ void BreedSession::push_step(BreedStep step) {
 
 void BreedSession::breed(const std::vector<std::string>& parents, double strength) {
     std::lock_guard lock(mutex_);
-    breed_locked(parents, strength);
+    as_one_choice([&] { breed_locked(parents, strength); });
 }
 
 void BreedSession::breed_locked(const std::vector<std::string>& parents, double strength) {
@@ -240,7 +287,7 @@ void BreedSession::breed_locked(const std::vector<std::string>& parents, double 
 
 void BreedSession::undo() {
     std::lock_guard lock(mutex_);
-    undo_locked();
+    as_one_choice([&] { undo_locked(); });
 }
 
 void BreedSession::undo_locked() {
@@ -252,7 +299,7 @@ void BreedSession::undo_locked() {
 
 void BreedSession::redo() {
     std::lock_guard lock(mutex_);
-    redo_locked();
+    as_one_choice([&] { redo_locked(); });
 }
 
 void BreedSession::redo_locked() {
@@ -399,7 +446,7 @@ void BreedSession::start_explore(const std::vector<std::string>& parents, int bi
         }
         std::lock_guard guard(mutex_);
         try {
-            if (error.empty()) finish_explore(std::move(result), parents, births);
+            if (error.empty()) as_one_choice([&] { finish_explore(std::move(result), parents, births); });
         } catch (const std::exception& e) {
             error = e.what();
         }

@@ -115,6 +115,13 @@ private:
     void push_step(BreedStep step);
     // Appends the choice to choices.jsonl, then writes state.json and lineage.csv.
     void record(const nlohmann::json& choice);
+    // A choice in memory is undone when it could not be saved (a full disk):
+    // the session stays what state.json says.
+    struct Saved;
+    Saved saved_point() const;
+    void roll_back(const Saved& saved);
+    // Runs `change` (which ends with record()); if it throws, rolls back and rethrows.
+    template <class Change> void as_one_choice(Change&& change);
     void apply(const nlohmann::json& choice);  // replay: one line of choices.jsonl
     void finish_explore(ExploreResult result, std::vector<std::string> parents, int births);
     void breed_locked(const std::vector<std::string>& parents, double strength);

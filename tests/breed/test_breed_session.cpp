@@ -16,6 +16,7 @@
 
 using namespace morphogen;
 using namespace morphogen::testing;
+namespace fs = std::filesystem;
 using nlohmann::json;
 
 namespace {
@@ -33,6 +34,10 @@ int status_of(const std::function<void()>& f) {
         return e.status;
     }
     return 0;
+}
+
+std::size_t files_in(const fs::path& dir) {
+    return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), fs::directory_iterator()));
 }
 
 std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
@@ -287,4 +292,37 @@ TEST_CASE("export writes the genome and an engine-ready GLB", "[breed]") {
     bad.height_m = -1.0;
     CHECK(status_of([&] { s->export_plant(id, bad); }) == 400);
     CHECK(status_of([&] { s->export_plant("p123456", {}); }) == 404);
+}
+
+TEST_CASE("a choice that cannot be saved changes nothing: the session stays what its files say", "[breed]") {
+    TempDir tmp("breed");
+    const fs::path dir = tmp.path / "s";
+    const auto s = BreedSession::create(dir, tiny_breed_config(), {});
+    s->breed({grid_ids(s->state_json())[0]}, 0.5);
+    const json before = s->state_json();
+    const std::string log = read_text(dir / "choices.jsonl");
+    const std::string state_file = read_text(dir / "state.json");
+    const std::size_t genome_files = files_in(dir / "genomes");
+    // state.json cannot be replaced while a non-empty directory stands in its place.
+    fs::rename(dir / "state.json", tmp.path / "state.json.kept");
+    fs::create_directories(dir / "state.json" / "blocker");
+    const std::vector<std::string> g = grid_ids(before);
+    CHECK_THROWS(s->breed({g[1], g[2]}, 0.5));
+    CHECK_THROWS(s->undo());
+    CHECK(s->state_json() == before);
+    CHECK(read_text(dir / "choices.jsonl") == log);
+    CHECK(files_in(dir / "genomes") == genome_files);
+    CHECK(files_in(dir / "meshes") == genome_files);
+    // The disk is back: the next choices follow the last saved one, and the
+    // files resume and replay to this session.
+    fs::remove_all(dir / "state.json");
+    fs::rename(tmp.path / "state.json.kept", dir / "state.json");
+    s->breed({g[1], g[2]}, 0.5);
+    s->undo();
+    const json after = s->state_json();
+    CHECK(lines(read_text(dir / "choices.jsonl")) == lines(log) + 2);
+    CHECK(BreedSession::resume(dir)->state_json() == after);
+    BreedSession::replay(dir, tmp.path / "r");
+    CHECK(session_difference(dir, tmp.path / "r") == "");
+    CHECK(state_file != read_text(dir / "state.json"));
 }
