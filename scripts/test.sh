@@ -4,7 +4,8 @@
 # "slow" are left out: ctest --test-dir build -L slow runs them. The page
 # tests (label "browser": JavaScript in Chromium) run once, on the optimised
 # build; the server and the report they drive run under the sanitizers in
-# test_breed and test_app.
+# test_breed and test_app. Tests whose point is scale run a part of their
+# work under the sanitizers (tests/support/sanitizers.hpp): whole once, here.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh

@@ -7,6 +7,7 @@
 #include "run/run_records.hpp"
 #include "tests/app/evolve_test_support.hpp"
 #include "tests/app/search_states.hpp"
+#include "tests/support/sanitizers.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -307,7 +308,8 @@ TEST_CASE("a MAP-Elites run with CMA emitters killed during generation 0 resumes
           "[app][map_elites][emitters][signals]") {
     TempDir tmp("me-first-checkpoint");
     nlohmann::json config = nlohmann::json::parse(me_config(1));
-    config["growth"]["steps"] = 150;  // a generation 0 of seconds: the kill lands inside it
+    // A generation 0 of seconds (the sanitizers slow growth down): the kill lands inside it.
+    config["growth"]["steps"] = morphogen::testing::whole_or_under_sanitizers(150, 60);
     config["growth"]["max_vertices"] = 3000;
     config["emitters"] = nlohmann::json::parse(R"([{"kind": "cma_mae", "share": 1, "sigma0": 0.3,
         "learning_rate": 0.2, "threshold_min": -1}, {"kind": "cma_me", "share": 1, "sigma0": 0.2}])");

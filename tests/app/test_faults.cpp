@@ -1,3 +1,4 @@
+
 // Faults during a run: Ctrl-C/SIGTERM and kill -9 at random moments from
 // the first millisecond, a full disk, a log that cannot be opened, a deleted
 // best/, leftovers of a crash. Every stopped run must end, after `resume` (or
@@ -6,6 +7,7 @@
 #include "base/atomic_file.hpp"
 #include "run/checkpoint.hpp"
 #include "tests/app/evolve_test_support.hpp"
+#include "tests/support/sanitizers.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -124,7 +126,8 @@ TEST_CASE("SIGINT or SIGTERM at any moment: resumed or restarted to the same byt
     std::mt19937 random(20261123);
     // Delays from 0 to a little past the run's end (the whole run is spawned, so measure generously).
     const long span_us = static_cast<long>(t.seconds * 1.5e6) + 2000;
-    for (int trial = 0; trial < 24; ++trial) {
+    const int trials = morphogen::testing::whole_or_under_sanitizers(24, 8);
+    for (int trial = 0; trial < trials; ++trial) {
         const int signal = trial % 2 == 0 ? SIGINT : SIGTERM;
         const bool blocked = trial % 4 < 2;  // half start with the signals blocked across exec
         const long delay = trial < 4 ? 0 : std::uniform_int_distribution<long>(0, span_us)(random);

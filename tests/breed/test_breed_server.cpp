@@ -5,6 +5,7 @@
 #include "tests/breed/breed_test_support.hpp"
 #include "tests/breed/server_process.hpp"
 #include "tests/support/temp_dir.hpp"
+#include "tests/support/sanitizers.hpp"
 
 #include <catch2/catch.hpp>
 #include <httplib.h>
@@ -197,7 +198,7 @@ TEST_CASE("the server prints its address, serves the page and API, and refuses w
 TEST_CASE("many requests at once: nothing crashes, nothing is lost", "[breed][server]") {
     TempDir tmp("breed_server");
     BreedProcess server({config_file(tmp), "--out", tmp.file("s")});
-    constexpr int kThreads = 8, kRequests = 50;
+    constexpr int kThreads = 8, kRequests = whole_or_under_sanitizers(50, 20);
     std::atomic<int> breeds{0}, failures{0};
     std::vector<std::thread> threads;
     for (int t = 0; t < kThreads; ++t) {

@@ -4,6 +4,7 @@
 #include "fitness/measures.hpp"
 #include "growth/genome_grower.hpp"
 #include "tests/fitness/mesh_builders.hpp"
+#include "tests/support/sanitizers.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -125,7 +126,8 @@ TEST_CASE("z-buffer and ray shooting agree on grown meshes", "[fitness][canopy][
     std::mt19937_64 rng(7);
     std::uniform_real_distribution<double> uniform(-2.0, 2.0);
     int above = 0;
-    for (int g = 0; g < 12; ++g) {
+    const int genomes = morphogen::testing::whole_or_under_sanitizers(12, 4);
+    for (int g = 0; g < genomes; ++g) {
         Genome genome{grower.layers(), {}};
         genome.params.resize(parameter_count(genome.layers));
         for (double& p : genome.params) p = uniform(rng);
