@@ -5,7 +5,8 @@
 # tests (label "browser": JavaScript in Chromium) run once, on the optimised
 # build; the server and the report they drive run under the sanitizers in
 # test_breed and test_app. Tests whose point is scale run a part of their
-# work under the sanitizers (tests/support/sanitizers.hpp): whole once, here.
+# work under the sanitizers (tests/support/sanitizers.hpp); the optimised
+# build above runs them whole.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scripts/setup.sh
