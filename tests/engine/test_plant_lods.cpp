@@ -197,7 +197,10 @@ TEST_CASE("a chain that cannot keep its bound stops, and the GLB and the manifes
         record.id = "s";
         record.genome_hash = "0123456789abcdef";
         const PlantExportOptions options{.height_m = std::nullopt, .lods = 3, .wind = true};
-        const tinygltf::Model model = test::parse_glb(plant_glb_bytes(plant, record, options, "test"));
+        testing::TempDir temp("short-chain");
+        SpeciesPack pack(temp.path / "pack", PackSource{.run = "r", .algorithm = "map_elites", .measures = {}}, options);
+        pack.add(plant, record);  // writes plant_s.glb
+        const tinygltf::Model model = test::parse_glb(testing::read_text(temp.path / "pack" / "plant_s.glb"));
         const tinygltf::Node& root = model.nodes.at(0);
         CHECK(root.children.size() == written);
         CHECK(root.extras.Get("lods_requested").GetNumberAsInt() == 3);
@@ -205,10 +208,6 @@ TEST_CASE("a chain that cannot keep its bound stops, and the GLB and the manifes
         for (std::size_t i = 1; i < written; ++i)
             CHECK(model.nodes.at(static_cast<std::size_t>(root.children[i])).extras.Get("hausdorff_percent").GetNumberAsDouble() ==
                   Approx(100 * lods.distances[i]).margin(1e-3));
-
-        testing::TempDir temp("short-chain");
-        SpeciesPack pack(temp.path / "pack", PackSource{.run = "r", .algorithm = "map_elites", .measures = {}}, options);
-        pack.add(plant, record);
         const nlohmann::json entry = nlohmann::json::parse(pack.manifest_text())["species"][0];
         CHECK(entry["lods_written"] == written);
         CHECK(entry["triangles"].size() == written);
