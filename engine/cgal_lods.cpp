@@ -21,6 +21,9 @@
 
 #include <boost/iterator/counting_iterator.hpp>
 
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <stdexcept>
 #include <string>
 
@@ -69,42 +72,125 @@ double diagonal(MeshView mesh) {
     return std::max((hi - lo).norm(), 1e-12);
 }
 
-// `mesh` collapsed to about `faces` triangles. A closed triangle mesh has
+// Points on `mesh` for hausdorff_distance: its vertices, each triangle's
+// centroid and edge midpoints, and max(2000, 4 x faces) points spread over
+// the triangles by area, each at barycentric coordinates from a fixed
+// sequence. Ours rather than CGAL's sample_triangle_mesh: CGAL 5.5 draws
+// some samples from its default random generator whatever the seed, so the
+// same meshes gave distances up to a third apart between calls.
+std::vector<Point> surface_samples(MeshView mesh) {
+    std::vector<Point> points;
+    const auto point = [](const Vec3& p) { return Point(p.x(), p.y(), p.z()); };
+    for (const Vec3& p : mesh.positions) points.push_back(point(p));
+    std::vector<double> areas;
+    double total = 0;
+    for (const Face& f : mesh.faces) {
+        const Vec3 &p = mesh.positions[f[0]], &q = mesh.positions[f[1]], &r = mesh.positions[f[2]];
+        points.push_back(point((p + q + r) / 3));
+        points.push_back(point((p + q) / 2));
+        points.push_back(point((q + r) / 2));
+        points.push_back(point((r + p) / 2));
+        areas.push_back((q - p).cross(r - p).norm() / 2);
+        total += areas.back();
+    }
+    const double wanted = static_cast<double>(std::max<std::size_t>(2000, 4 * mesh.faces.size()));
+    std::uint64_t state = 0x9E3779B97F4A7C15ULL;
+    const auto uniform = [&state] {  // splitmix64
+        std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
+        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
+        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
+        return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
+    };
+    double done = 0;
+    std::size_t placed = 0;
+    for (std::size_t i = 0; i < mesh.faces.size() && total > 0; ++i) {
+        done += areas[i];
+        const auto upto = static_cast<std::size_t>(std::llround(wanted * done / total));
+        const Face& f = mesh.faces[i];
+        const Vec3 &p = mesh.positions[f[0]], &q = mesh.positions[f[1]], &r = mesh.positions[f[2]];
+        for (; placed < upto; ++placed) {
+            double u = uniform(), v = uniform();
+            if (u + v > 1) u = 1 - u, v = 1 - v;
+            points.push_back(point(p + u * (q - p) + v * (r - p)));
+        }
+    }
+    return points;
+}
+
+enum class Cost { quadric, distance };
+
+// `original` collapsed to about `faces` triangles. A closed triangle mesh has
 // 3/2 edges per face and a collapse removes 3 edges (2 faces); CGAL stops
 // below the threshold, so 3/2 * faces + 1 stops at the first count <= faces.
-MeshArrays collapse_to(MeshView mesh, std::size_t faces) {
-    const Surface original = to_surface(mesh);
+MeshArrays collapse_to(const Surface& original, double diag, std::size_t faces, Cost kind) {
     Surface surface = original;
     using Policies = SMS::GarlandHeckbert_triangle_policies<Surface, Kernel>;
     Policies policies(surface);
     const SMS::Bounded_normal_change_placement<Policies::Get_placement> placement(policies.get_placement());
-    const lods::DistanceCost<Surface, Kernel, Policies::Get_cost> cost(original, policies.get_cost(), 1e-3 / diagonal(mesh));
     const SMS::Count_stop_predicate<Surface> stop(faces * 3 / 2 + 1);
-    SMS::edge_collapse(surface, stop, CGAL::parameters::get_cost(cost).get_placement(placement));
+    if (kind == Cost::quadric) {
+        SMS::edge_collapse(surface, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement));
+    } else {
+        const lods::DistanceCost<Surface, Kernel, Policies::Get_cost> cost(original, policies.get_cost(), 1e-3 / diag);
+        SMS::edge_collapse(surface, stop, CGAL::parameters::get_cost(cost).get_placement(placement));
+    }
     return to_arrays(surface);
 }
 
+// The tries for one level, cheapest first (experiments/2026-11-27-lod-bounds.md:
+// the quadric cost keeps the bound on most plants at a thirtieth of the
+// distance cost's time).
+struct Try {
+    Cost cost;
+    double ratio;
+};
+constexpr Try kTries[] = {{Cost::quadric, kLodHalf}, {Cost::quadric, kLodMaxRatio},
+                          {Cost::distance, kLodHalf}, {Cost::distance, kLodMaxRatio}};
+
 }  // namespace
 
-std::vector<MeshArrays> simplify_lods(MeshView lod0, int count) {
+PlantLods simplify_lods(MeshView lod0, int count) {
     if (count < 1) throw std::invalid_argument("simplify_lods: at least one level");
     if ((lod0.faces.size() >> (count - 1)) < kMinLodFaces)
         throw MeshError("--lods " + std::to_string(count) + ": " + std::to_string(count) + " levels of detail need at least " +
                                     std::to_string(kMinLodFaces << (count - 1)) + " triangles; the plant has " +
                                     std::to_string(lod0.faces.size()));
-    std::vector<MeshArrays> levels;
-    levels.push_back(MeshArrays{{lod0.positions.begin(), lod0.positions.end()}, {lod0.faces.begin(), lod0.faces.end()}});
-    for (int i = 1; i < count; ++i) levels.push_back(collapse_to(lod0, lod0.faces.size() >> i));
-    return levels;
+    PlantLods lods{.levels = {}, .distances = {0.0}, .requested = count};
+    lods.levels.push_back(MeshArrays{{lod0.positions.begin(), lod0.positions.end()}, {lod0.faces.begin(), lod0.faces.end()}});
+    if (count == 1) return lods;
+    const Surface original = to_surface(lod0);
+    const double diag = diagonal(lod0);
+    for (int i = 1; i < count; ++i) {
+        const std::size_t before = lods.levels.back().faces.size();
+        bool kept = false;
+        double nearest_refused = std::numeric_limits<double>::infinity();
+        for (const Try& attempt : kTries) {
+            const auto target = static_cast<std::size_t>(std::floor(attempt.ratio * static_cast<double>(before)));
+            if (target < kMinLodFaces) break;
+            MeshArrays level = collapse_to(original, diag, target, attempt.cost);
+            if (level.faces.size() > target) continue;  // CGAL found no more collapses it may make
+            const double distance = hausdorff_distance(lod0, level.view()) / diag;
+            if (distance > lod_distance_bound(i)) {
+                nearest_refused = std::min(nearest_refused, distance);
+                continue;
+            }
+            lods.levels.push_back(std::move(level));
+            lods.distances.push_back(distance);
+            kept = true;
+            break;
+        }
+        if (!kept) {
+            lods.refused_distance = std::isfinite(nearest_refused) ? nearest_refused : 0.0;
+            break;
+        }
+    }
+    return lods;
 }
 
 double hausdorff_distance(MeshView a, MeshView b) {
     const Surface sa = to_surface(a), sb = to_surface(b);
-    const auto samples = [](const Surface& s) {
-        return CGAL::parameters::number_of_points_on_faces(std::max<std::size_t>(2000, 4 * s.number_of_faces()))
-            .random_seed(1);
-    };
-    return PMP::approximate_symmetric_Hausdorff_distance<CGAL::Sequential_tag>(sa, sb, samples(sa), samples(sb));
+    return std::max(PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(surface_samples(a), sb),
+                    PMP::max_distance_to_triangle_mesh<CGAL::Sequential_tag>(surface_samples(b), sa));
 }
 
 bool is_closed_manifold(MeshView mesh) {

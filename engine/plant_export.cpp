@@ -8,6 +8,7 @@
 #include "io/plant_glb.hpp"
 
 #include <cmath>
+#include <iostream>
 #include <sstream>
 
 namespace morphogen {
@@ -19,6 +20,8 @@ std::string shortest(double value) {
     return text.str();
 }
 }  // namespace
+
+double lod_percent(double fraction) { return std::round(fraction * 1e5) / 1e3; }
 
 std::string plant_export_problem(const PlantExportOptions& options) {
     if (options.height_m && !(*options.height_m > 0 && *options.height_m <= kMaxPlantHeightMetres))
@@ -33,7 +36,7 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
     PlacedPlant placed = place_plant(plant.mesh, options.height_m);
 
     EnginePlant ready{.name = "plant_" + record.id, .extras = record_json(record), .levels = {}, .wind = {},
-                      .lod_nodes = options.lods > 0, .height_m = placed.height_m};
+                      .lod_nodes = options.lods > 0, .lod_distances = {}, .height_m = placed.height_m};
     ready.extras["generator"] = "morphogen";
     ready.extras["height_m"] = placed.height_m;
     ready.extras["metres_per_unit"] = placed.metres_per_unit;
@@ -45,7 +48,19 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
         ready.wind.push_back(std::move(wind));
         return ready;
     }
-    ready.levels = simplify_lods(placed.mesh.view(), options.lods);
+    PlantLods lods = simplify_lods(placed.mesh.view(), options.lods);
+    const bool short_chain = lods.short_chain();
+    ready.levels = std::move(lods.levels);
+    ready.lod_distances = lods.distances;
+    ready.extras["lods_requested"] = options.lods;
+    ready.extras["lods_written"] = ready.levels.size();
+    if (short_chain) {
+        const int next = static_cast<int>(ready.levels.size());
+        std::cerr << "morphogen: " << ready.name << ": --lods " << options.lods << ": wrote " << next
+                  << " level(s); LOD" << next << " came no nearer than " << lod_percent(lods.refused_distance)
+                  << " % of the diagonal to LOD0 (bound " << lod_percent(lod_distance_bound(next))
+                  << " %) at half the triangles or a little more, so the chain stops at LOD" << next - 1 << "\n";
+    }
     for (const MeshArrays& level : ready.levels) {
         if (!options.wind) ready.wind.emplace_back();
         else if (ready.wind.empty()) ready.wind.push_back(wind);
@@ -59,6 +74,7 @@ std::string plant_glb_bytes(const EnginePlant& plant, const std::string& source)
     for (std::size_t i = 0; i < plant.levels.size(); ++i) {
         nlohmann::json extras;
         if (plant.lod_nodes) extras = {{"triangles", plant.levels[i].faces.size()}};
+        if (plant.lod_nodes && i > 0) extras["hausdorff_percent"] = lod_percent(plant.lod_distances[i]);
         glb.levels.push_back(PlantLevel{.mesh = plant.levels[i].view(), .wind = plant.wind[i], .extras = extras});
     }
     return plant_glb_bytes(glb, source);

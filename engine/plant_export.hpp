@@ -49,10 +49,20 @@ struct EnginePlant {
     std::vector<MeshArrays> levels;        // placed: one mesh without --lods, else LOD0 .. LOD(N-1)
     std::vector<std::vector<float>> wind;  // per level: 4 floats per vertex with --wind, else empty
     bool lod_nodes = false;                // --lods: levels as child nodes plant_<id>_LOD<i>
+    // --lods: per level, its two-sided Hausdorff distance from LOD0 over
+    // LOD0's diagonal (plant_lods.hpp); levels may be fewer than asked.
+    std::vector<double> lod_distances;
     double height_m = 0.0;                 // the placed plant's height in metres
 };
 
-// Places the plant, makes its levels and wind data. Throws as plant_glb_bytes.
+// A fraction as a percentage rounded to 3 decimals, as extras and the pack's
+// manifest write the LOD distances.
+double lod_percent(double fraction);
+
+// Places the plant, makes its levels and wind data. With --lods the chain
+// stops at the first level that cannot keep its distance bound
+// (simplify_lods): extras record `lods_requested` and `lods_written`, and one
+// line on stderr says so. Throws as plant_glb_bytes.
 EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options);
 
 // The GLB bytes of a plant made engine-ready; IoError naming `source` when

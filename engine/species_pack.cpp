@@ -55,6 +55,12 @@ void SpeciesPack::add(const GrownPlant& plant, const PlantRecord& record) {
     nlohmann::json triangles = nlohmann::json::array();
     for (const MeshArrays& level : ready.levels) triangles.push_back(level.faces.size());
     entry["triangles"] = triangles;
+    if (options_.lods > 0) {
+        entry["lods_written"] = ready.levels.size();  // fewer than options.lods where the chain stopped
+        nlohmann::json distances = nlohmann::json::array();
+        for (const double d : ready.lod_distances) distances.push_back(lod_percent(d));
+        entry["hausdorff_percent"] = distances;
+    }
     ready.levels.resize(1);
     ready.wind.resize(1);
     plants_.push_back(std::move(ready));

@@ -23,10 +23,11 @@ ReportPlant grow_report_plant(const ExperimentConfig& config, const GenomeGrower
     options.wind = true;
     options.lods = report_lod_count(static_cast<std::size_t>(mesh.faces.size()));
     try {
-        plant.glb = plant_glb_bytes(GrownPlant{.mesh = mesh, .birth_steps = dated.birth_steps, .steps = plant.grown.steps_done},
-                                    birth_record(config, individual, config.qd.measure_names(), cell), options,
-                                    "plant " + std::to_string(individual.id));
-        plant.lods = options.lods;
+        const EnginePlant ready =
+            make_engine_plant(GrownPlant{.mesh = mesh, .birth_steps = dated.birth_steps, .steps = plant.grown.steps_done},
+                              birth_record(config, individual, config.qd.measure_names(), cell), options);
+        plant.glb = plant_glb_bytes(ready, "plant " + std::to_string(individual.id));
+        plant.lods = static_cast<int>(ready.levels.size());  // fewer than asked where the chain stopped (plant_lods.hpp)
     } catch (const MeshError& e) {
         plant.glb = encode_mesh(mesh, MeshFormat::glb);
         plant.why_plain = e.what();

@@ -4,7 +4,7 @@ Run: blender -b --factory-startup --python blender_pack_check.py -- PACK_DIR...
 
 For every pack and every species of its manifest.json, imports plant_<id>.glb with
 Blender's glTF importer and checks: the object plant_<id>; its LOD children
-plant_<id>_LOD0 .. (the count the pack's options ask for), each mesh named
+plant_<id>_LOD0 .. (the count the manifest says was written, at most the options'), each mesh named
 as its object; each level's
 triangle count against the manifest; the height in metres (the manifest's,
 and the --height asked for) with the lowest point at 0 and the foot at the
@@ -118,6 +118,13 @@ def check_species(pack, manifest, species):
         return None
     root = objects[name]
     lods = options['lods']
+    if lods > 0:  # the chain stops where a level cannot keep its distance bound (file-formats.md)
+        written = species['lods_written']
+        check(1 <= written <= lods, f"{path}: lods_written {written} with --lods {lods}")
+        check(len(species['triangles']) == written, f"{path}: {len(species['triangles'])} triangle counts, {written} levels")
+        check(root.get('lods_written') == written,
+              f"{path}: {name}'s extras say lods_written {root.get('lods_written')}, the manifest {written}")
+        lods = written
     if lods == 0:
         levels = [root]
     else:

@@ -273,7 +273,8 @@ TEST_CASE("the viewer's grown plants are engine-ready: named for their birth, wi
         REQUIRE(lods >= 1);  // these plants have at least 8 triangles
         REQUIRE(root["children"].size() == static_cast<std::size_t>(lods));
         const nlohmann::json& lod0 = gltf["nodes"][root["children"][0].get<int>()];
-        CHECK(lods == report_lod_count(lod0["extras"]["triangles"].get<std::size_t>()));
+        CHECK(lods <= report_lod_count(lod0["extras"]["triangles"].get<std::size_t>()));  // the chain may stop short
+        CHECK(root["extras"]["lods_written"] == lods);
         for (int i = 0; i < lods; ++i) {
             const nlohmann::json& node = gltf["nodes"][root["children"][i].get<int>()];
             CHECK(node["name"] == name + "_LOD" + std::to_string(i));

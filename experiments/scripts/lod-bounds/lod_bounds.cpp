@@ -79,7 +79,7 @@ static MeshArrays collapse_lt(MeshView mesh, std::size_t faces) {
 }
 
 static std::vector<MeshArrays> lods(const std::string& method, MeshView lod0) {
-    if (method == "library") return simplify_lods(lod0, 3);
+    if (method == "library") return simplify_lods(lod0, 3).levels;  // may stop short (plant_lods.hpp)
     std::vector<MeshArrays> out{MeshArrays{{lod0.positions.begin(), lod0.positions.end()}, {lod0.faces.begin(), lod0.faces.end()}}};
     for (int i = 1; i < 3; ++i) {
         const std::size_t target = lod0.faces.size() >> i;
@@ -102,7 +102,7 @@ static double distance(MeshView a, MeshView b) {
 }
 
 struct Totals {
-    int plants = 0, measured = 0, not_manifold = 0, ratio_off = 0, over[3] = {}, large = 0, large_over[3] = {};
+    int plants = 0, measured = 0, short_chains = 0, not_manifold = 0, ratio_off = 0, over[3] = {}, large = 0, large_over[3] = {};
     double worst[3] = {}, large_worst[3] = {}, worst_ratio = 0, seconds = 0;
 };
 
@@ -121,7 +121,8 @@ static void measure(const std::string& method, const std::string& name, MeshView
     const bool large = lod0.faces.size() >= 1000;
     t.large += large;
     std::printf("%s %zu", name.c_str(), lod0.faces.size());
-    for (int i = 1; i < 3; ++i) {
+    if (levels.size() < 3) ++t.short_chains;
+    for (int i = 1; i < static_cast<int>(levels.size()); ++i) {
         const MeshView level = levels[static_cast<std::size_t>(i)].view();
         const double ratio = double(level.faces.size()) / double(levels[static_cast<std::size_t>(i - 1)].faces.size());
         const double off = std::abs(ratio - 0.5) / 0.5;
@@ -135,7 +136,7 @@ static void measure(const std::string& method, const std::string& name, MeshView
         if (large) t.large_worst[i] = std::max(t.large_worst[i], d), t.large_over[i] += d > 0.01 * i;
         std::printf(" | LOD%d %zu ratio %.3f %s %.2f%%", i, level.faces.size(), ratio, manifold ? "manifold" : "NOT-MANIFOLD", 100 * d);
     }
-    std::printf("\n");
+    std::printf(levels.size() < 3 ? " | stopped at LOD%zu\n" : "\n", levels.size() - 1);
 }
 
 static GenomeGrower grower_from(const char* text) {
@@ -167,9 +168,9 @@ int main(int argc, char** argv) {
             measure(method, argv[i], mesh.view(), t);
         }
     }
-    std::printf("SUMMARY %s: %d plants, %d measured (%d large); not manifold %d; ratio off > 10%% %d (worst %.1f%%); "
+    std::printf("SUMMARY %s: %d plants, %d measured (%d large); short chains %d; not manifold %d; ratio off > 10%% %d (worst %.1f%%); "
                 "LOD1 worst %.2f%% over-1%% %d (large %.2f%%, %d); LOD2 worst %.2f%% over-2%% %d (large %.2f%%, %d); %.2f s simplifying\n",
-                method.c_str(), t.plants, t.measured, t.large, t.not_manifold, t.ratio_off, 100 * t.worst_ratio,
+                method.c_str(), t.plants, t.measured, t.large, t.short_chains, t.not_manifold, t.ratio_off, 100 * t.worst_ratio,
                 100 * t.worst[1], t.over[1], 100 * t.large_worst[1], t.large_over[1], 100 * t.worst[2], t.over[2],
                 100 * t.large_worst[2], t.large_over[2], t.seconds);
 }
