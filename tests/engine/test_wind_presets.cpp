@@ -4,6 +4,7 @@
 #include "base/errors.hpp"
 #include "engine/birth_steps.hpp"
 #include "engine/plant_export.hpp"
+#include "engine/plant_scatter.hpp"
 #include "engine/plant_wind.hpp"
 #include "growth/genome_grower.hpp"
 #include "io/plant_glb.hpp"
@@ -169,4 +170,22 @@ TEST_CASE("a level's further attribute must fit its vertices and take a free nam
                     std::invalid_argument);
     CHECK_THROWS_AS(glb({{.name = "_X", .components = 5, .values = std::vector<float>(5 * n, 0.5f)}}),
                     std::invalid_argument);
+}
+
+TEST_CASE("a species pack's scatter carries the presets of its plants", "[engine][wind][pack]") {
+    const Grown grown = grow_dated(13, 60);
+    const GrownPlant plant{.mesh = grown.state.mesh.view(), .birth_steps = grown.births, .steps = 60};
+    const PlantExportOptions options{.height_m = std::nullopt, .lods = 0, .wind = true,
+                                     .wind_presets = {WindPreset::color}};
+    const std::vector<EnginePlant> plants{make_engine_plant(plant, record_w(), options)};
+    const tinygltf::Model model = test::parse_glb(plant_scatter_bytes(plants, "run", "test"));
+    const tinygltf::Primitive& primitive = model.meshes.at(0).primitives.at(0);
+    REQUIRE(primitive.attributes.count("COLOR_0") == 1);
+    const std::vector<float> wind = test::accessor_floats(model, primitive.attributes.at("_WIND"));
+    const std::vector<float> color = test::accessor_floats(model, primitive.attributes.at("COLOR_0"));
+    REQUIRE(color.size() == wind.size());
+    for (std::size_t v = 0; v < wind.size() / 4; ++v) {
+        CHECK(color[4 * v] == wind[4 * v + 1]);
+        CHECK(color[4 * v + 2] == wind[4 * v]);
+    }
 }
