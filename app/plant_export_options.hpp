@@ -4,6 +4,8 @@
 //   --height M  scale the plant to M metres (default: a model unit is a metre)
 //   --lods N    levels of detail LOD0 .. LOD(N-1) (engine/plant_lods.hpp)
 //   --wind      the _WIND vertex attribute (engine/plant_wind.hpp)
+//   --wind-preset NAME[,NAME]  also copies of it where engines read them
+//               (color, uv, godot; repeatable; needs --wind)
 // Header-only: app/ holds at most 15 source files.
 #include "engine/plant_export.hpp"
 
@@ -12,6 +14,7 @@
 #include <cctype>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace morphogen {
 
@@ -24,6 +27,23 @@ inline void add_plant_export_options(CLI::App* command, PlantExportOptions& opti
         ->check(CLI::Range(1, kMaxPlantLods));
     command->add_flag("--wind", options.wind,
                       "Engine-ready GLB with wind data: the _WIND vertex attribute (bend, flutter, phase, stiffness)");
+    command
+        ->add_option_function<std::vector<std::string>>(
+            "--wind-preset",
+            [&options](const std::vector<std::string>& names) {
+                for (const std::string& name : names) {
+                    const std::optional<WindPreset> preset = wind_preset_named(name);
+                    if (!preset)
+                        throw CLI::ValidationError("--wind-preset '" + name +
+                                                   "': not a preset; the presets are color, uv and godot");
+                    options.wind_presets.push_back(*preset);
+                }
+            },
+            "With --wind, also copy the wind data where engines read it: color (COLOR_0, CryEngine's channels; "
+            "tints viewers), uv (TEXCOORD_0 and _1: UV channels 0 and 1), godot (_CUSTOM0); repeatable or a "
+            "comma list")
+        ->delimiter(',')
+        ->type_name("NAME");
 }
 
 // Throws CLI::ValidationError (exit 2) naming the option for a bad value, or

@@ -5,6 +5,7 @@
 #include "base/json_text.hpp"
 #include "breed/breed_assets.hpp"
 #include "breed/breed_errors.hpp"
+#include "engine/plant_wind.hpp"
 
 #include <httplib.h>
 #include <nlohmann/json.hpp>
@@ -12,9 +13,11 @@
 #include <array>
 #include <cstdio>
 #include <functional>
+#include <optional>
 #include <random>
 #include <set>
 #include <string_view>
+#include <vector>
 
 namespace morphogen {
 
@@ -108,6 +111,20 @@ int integer_field(const json& body, const char* key, int fallback, int lo, int h
     return static_cast<int>(v.get<long long>());
 }
 
+// "wind_presets": a list of engine/plant_wind.hpp's preset names.
+std::vector<WindPreset> wind_presets_field(const json& names) {
+    const char* what = "\"wind_presets\" must be a list of preset names: color, uv, godot";
+    if (!names.is_array()) throw bad_request(what);
+    std::vector<WindPreset> presets;
+    for (const json& name : names) {
+        const std::optional<WindPreset> preset =
+            name.is_string() ? wind_preset_named(name.get<std::string>()) : std::nullopt;
+        if (!preset) throw bad_request(what);
+        presets.push_back(*preset);
+    }
+    return presets;
+}
+
 // "p000042" from "/api/mesh/p000042.glb" (prefix and suffix given); 404 otherwise.
 std::string id_in(const std::string& path, std::string_view prefix, std::string_view suffix) {
     if (!ends_with(path, suffix) || path.size() <= prefix.size() + suffix.size())
@@ -165,7 +182,7 @@ struct BreedServer::Impl {
         if (path == "/api/export")
             return post([this](const httplib::Request& req) {
                 const json body = body_object(req);
-                allow_only(body, {"id", "height", "lods", "wind"});
+                allow_only(body, {"id", "height", "lods", "wind", "wind_presets"});
                 if (!body.contains("id") || !body.at("id").is_string())
                     throw bad_request("missing field \"id\" (a plant id)");
                 PlantExportOptions o;
@@ -175,6 +192,7 @@ struct BreedServer::Impl {
                     if (!body.at("wind").is_boolean()) throw bad_request("\"wind\" must be true or false");
                     o.wind = body.at("wind").get<bool>();
                 }
+                if (body.contains("wind_presets")) o.wind_presets = wind_presets_field(body.at("wind_presets"));
                 const auto [genome, mesh] = session.export_plant(body.at("id").get<std::string>(), o);
                 return json_reply({{"genome", genome}, {"mesh", mesh}});
             });

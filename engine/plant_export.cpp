@@ -7,6 +7,7 @@
 #include "engine/plant_wind.hpp"
 #include "io/plant_glb.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <sstream>
@@ -28,6 +29,9 @@ std::string plant_export_problem(const PlantExportOptions& options) {
         return "--height " + shortest(*options.height_m) + ": must be a number of metres in (0, 10000]";
     if (options.lods < 0 || options.lods > kMaxPlantLods)
         return "--lods " + std::to_string(options.lods) + ": must be between 1 and " + std::to_string(kMaxPlantLods);
+    if (!options.wind_presets.empty() && !options.wind)
+        return "--wind-preset " + std::string(wind_preset_name(options.wind_presets.front())) +
+               ": copies the wind data, so it needs --wind";
     return {};
 }
 
@@ -36,11 +40,19 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
     PlacedPlant placed = place_plant(plant.mesh, options.height_m);
 
     EnginePlant ready{.name = "plant_" + record.id, .extras = record_json(record), .levels = {}, .wind = {},
-                      .lod_nodes = options.lods > 0, .lod_distances = {}, .height_m = placed.height_m};
+                      .wind_presets = options.wind_presets, .lod_nodes = options.lods > 0, .lod_distances = {},
+                      .height_m = placed.height_m};
     ready.extras["generator"] = "morphogen";
     ready.extras["height_m"] = placed.height_m;
     ready.extras["metres_per_unit"] = placed.metres_per_unit;
     if (options.wind) ready.extras["wind"] = "_WIND";
+    if (!options.wind_presets.empty()) {
+        nlohmann::json names = nlohmann::json::array();
+        for (const std::string_view name : kWindPresetNames)
+            if (std::ranges::find(options.wind_presets, *wind_preset_named(name)) != options.wind_presets.end())
+                names.push_back(name);
+        ready.extras["wind_presets"] = names;
+    }
     std::vector<float> wind;
     if (options.wind) wind = plant_wind(placed.mesh.view(), plant.birth_steps, plant.steps);
     if (options.lods == 0) {
@@ -75,7 +87,10 @@ std::string plant_glb_bytes(const EnginePlant& plant, const std::string& source)
         nlohmann::json extras;
         if (plant.lod_nodes) extras = {{"triangles", plant.levels[i].faces.size()}};
         if (plant.lod_nodes && i > 0) extras["hausdorff_percent"] = lod_percent(plant.lod_distances[i]);
-        glb.levels.push_back(PlantLevel{.mesh = plant.levels[i].view(), .wind = plant.wind[i], .extras = extras});
+        glb.levels.push_back(PlantLevel{.mesh = plant.levels[i].view(),
+                                        .wind = plant.wind[i],
+                                        .attributes = wind_preset_attributes(plant.wind[i], plant.wind_presets),
+                                        .extras = extras});
     }
     return plant_glb_bytes(glb, source);
 }

@@ -4,6 +4,7 @@
 // "Engine-ready GLB"): placed at its foot and scaled (plant_frame.hpp),
 // named plant_<id>, its record in extras (plant_record.hpp).
 #include "engine/plant_record.hpp"
+#include "engine/plant_wind.hpp"
 #include "mesh/mesh.hpp"
 
 #include <nlohmann/json.hpp>
@@ -20,6 +21,7 @@ struct PlantExportOptions {
     std::optional<double> height_m;  // --height: scale to this many metres; none: a unit is a metre
     int lods = 0;                    // --lods: 0 writes one mesh, N >= 1 writes LOD0 .. LOD(N-1)
     bool wind = false;               // --wind: the _WIND vertex attribute
+    std::vector<WindPreset> wind_presets{};  // --wind-preset: copies of _WIND where engines read them (needs wind)
 
     // Whether any option asks for the engine-ready GLB rather than the plain one.
     bool engine_ready() const { return height_m.has_value() || lods > 0 || wind; }
@@ -48,6 +50,7 @@ struct EnginePlant {
     nlohmann::json extras;                 // the record and the placement (docs/file-formats.md)
     std::vector<MeshArrays> levels;        // placed: one mesh without --lods, else LOD0 .. LOD(N-1)
     std::vector<std::vector<float>> wind;  // per level: 4 floats per vertex with --wind, else empty
+    std::vector<WindPreset> wind_presets;  // --wind-preset: written beside each level's _WIND
     bool lod_nodes = false;                // --lods: levels as child nodes plant_<id>_LOD<i>
     // --lods: per level, its two-sided Hausdorff distance from LOD0 over
     // LOD0's diagonal (plant_lods.hpp); levels may be fewer than asked.

@@ -1,6 +1,7 @@
 // The scatter's field (see plant_scatter.hpp).
 #include "engine/plant_scatter.hpp"
 
+#include "engine/plant_wind.hpp"
 #include "io/scatter_glb.hpp"
 
 #include <algorithm>
@@ -68,6 +69,7 @@ std::string plant_scatter_bytes(std::span<const EnginePlant> plants, const std::
                                          .extras = plant.extras,
                                          .mesh = plant.levels.front().view(),
                                          .wind = plant.wind.front(),
+                                         .attributes = wind_preset_attributes(plant.wind.front(), plant.wind_presets),
                                          .position = {static_cast<float>(x), 0.0f, static_cast<float>(z)},
                                          .instances = cluster(i, radius)});
     }

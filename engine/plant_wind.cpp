@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <initializer_list>
+#include <iterator>
 #include <limits>
 #include <numbers>
 #include <queue>
@@ -118,6 +120,40 @@ std::vector<float> plant_wind(MeshView placed, std::span<const int> birth_steps,
         wind.push_back(unit(stiffness[v]));
     }
     return wind;
+}
+
+std::optional<WindPreset> wind_preset_named(std::string_view name) {
+    for (std::size_t i = 0; i < std::size(kWindPresetNames); ++i)
+        if (kWindPresetNames[i] == name) return static_cast<WindPreset>(i);
+    return std::nullopt;
+}
+
+std::string_view wind_preset_name(WindPreset preset) { return kWindPresetNames[static_cast<std::size_t>(preset)]; }
+
+namespace {
+// The channels `channels` (indices into bend, flutter, phase, stiffness) of
+// every vertex, as one attribute.
+VertexAttribute wind_channels(std::span<const float> wind, std::string name, std::initializer_list<int> channels) {
+    VertexAttribute attribute{.name = std::move(name), .components = static_cast<int>(channels.size()), .values = {}};
+    attribute.values.reserve(wind.size() / 4 * channels.size());
+    for (std::size_t v = 0; v < wind.size() / 4; ++v)
+        for (const int channel : channels) attribute.values.push_back(wind[4 * v + static_cast<std::size_t>(channel)]);
+    return attribute;
+}
+}  // namespace
+
+std::vector<VertexAttribute> wind_preset_attributes(std::span<const float> wind, std::span<const WindPreset> presets) {
+    if (wind.size() % 4 != 0) throw std::invalid_argument("wind presets: wind data needs 4 values per vertex");
+    enum { bend, flutter, phase, stiffness };
+    std::vector<VertexAttribute> out;
+    const auto asked = [&](WindPreset preset) { return std::find(presets.begin(), presets.end(), preset) != presets.end(); };
+    if (asked(WindPreset::color)) out.push_back(wind_channels(wind, "COLOR_0", {flutter, phase, bend, stiffness}));
+    if (asked(WindPreset::uv)) {
+        out.push_back(wind_channels(wind, "TEXCOORD_0", {bend, flutter}));
+        out.push_back(wind_channels(wind, "TEXCOORD_1", {phase, stiffness}));
+    }
+    if (asked(WindPreset::godot)) out.push_back(wind_channels(wind, "_CUSTOM0", {bend, flutter, phase, stiffness}));
+    return out;
 }
 
 }  // namespace morphogen

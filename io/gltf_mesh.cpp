@@ -193,6 +193,23 @@ int add_wind_mesh(tinygltf::Model& model, MeshView mesh, std::span<const float> 
     return index;
 }
 
+void add_vertex_attribute(tinygltf::Model& model, int mesh, const std::string& name, int components,
+                          std::span<const float> values) {
+    tinygltf::Primitive& primitive = model.meshes.at(static_cast<std::size_t>(mesh)).primitives.at(0);
+    const std::string& mesh_name = model.meshes[static_cast<std::size_t>(mesh)].name;
+    if (primitive.attributes.count(name) != 0)
+        throw std::invalid_argument(mesh_name + ": attribute " + name + " is there already");
+    const int types[] = {TINYGLTF_TYPE_VEC2, TINYGLTF_TYPE_VEC3, TINYGLTF_TYPE_VEC4};
+    if (components < 2 || components > 4)
+        throw std::invalid_argument(mesh_name + ": attribute " + name + " needs 2, 3 or 4 components");
+    const std::size_t vertices = model.accessors.at(static_cast<std::size_t>(primitive.attributes.at("POSITION"))).count;
+    if (values.size() != static_cast<std::size_t>(components) * vertices)
+        throw std::invalid_argument(mesh_name + ": attribute " + name + " needs " + std::to_string(components) +
+                                    " values per vertex");
+    const int type = types[components - 2];
+    primitive.attributes[name] = add_floats(model, values, type, TINYGLTF_TARGET_ARRAY_BUFFER);
+}
+
 std::string glb_bytes(const tinygltf::Model& model, const std::string& path) {
     std::ostringstream stream;
     tinygltf::TinyGLTF gltf;

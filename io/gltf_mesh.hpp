@@ -54,6 +54,13 @@ tinygltf::Value json_value(const nlohmann::json& json);
 int add_wind_mesh(tinygltf::Model& model, MeshView mesh, std::span<const float> wind, int material,
                   const std::string& name);
 
+// Adds `values` (float32, `components` 2, 3 or 4 per vertex: VEC2 .. VEC4)
+// as the vertex attribute `name` of mesh `mesh`'s primitive. Throws
+// std::invalid_argument for a name the primitive has already, other
+// components, or values for another number of vertices.
+void add_vertex_attribute(tinygltf::Model& model, int mesh, const std::string& name, int components,
+                          std::span<const float> values);
+
 // The .glb bytes of `model`; IoError naming `path` if tinygltf cannot encode it.
 std::string glb_bytes(const tinygltf::Model& model, const std::string& path);
 

@@ -55,6 +55,8 @@ std::string scatter_glb_bytes(std::span<const ScatterSpecies> species, const std
         tinygltf::Node node;
         node.name = one.name;
         node.mesh = gltf::add_wind_mesh(model, one.mesh, one.wind, material, one.name);
+        for (const VertexAttribute& attribute : one.attributes)
+            gltf::add_vertex_attribute(model, node.mesh, attribute.name, attribute.components, attribute.values);
         node.translation = {one.position[0], one.position[1], one.position[2]};
         node.extras = gltf::json_value(one.extras);
         if (!one.instances.empty()) {

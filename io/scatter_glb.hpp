@@ -5,6 +5,7 @@
 // EXT_mesh_gpu_instancing extension (in extensionsUsed, never in
 // extensionsRequired), which only clients that know it draw. Where the copies
 // go is the caller's (engine/plant_scatter.hpp); this file only lays them out.
+#include "io/plant_glb.hpp"
 #include "mesh/mesh.hpp"
 
 #include <nlohmann/json.hpp>
@@ -29,6 +30,7 @@ struct ScatterSpecies {
     nlohmann::json extras;     // the node's extras (null: none)
     MeshView mesh;             // Z-up, as every morphogen mesh; turned Y-up here
     std::span<const float> wind;  // empty, or 4 floats per vertex: the mesh's _WIND attribute
+    std::vector<VertexAttribute> attributes{};  // further attributes after _WIND (wind presets)
     std::array<float, 3> position{0, 0, 0};  // the node's translation (Y-up)
     // The drawings with the extension. Empty: a plain node. Otherwise the
     // first must be the identity, so that a client without the extension
@@ -38,7 +40,8 @@ struct ScatterSpecies {
 
 // The .glb bytes: a root node `root_name` (extras `root_extras`) whose
 // children are the species' nodes, in order. Throws std::invalid_argument
-// for no species, a mesh without faces, wind of the wrong length or
+// for no species, a mesh without faces, wind or an attribute of the wrong
+// length (plant_glb.hpp) or
 // instances whose first is not the identity; IoError naming `source` if
 // tinygltf cannot encode the model.
 std::string scatter_glb_bytes(std::span<const ScatterSpecies> species, const std::string& root_name,

@@ -1,9 +1,11 @@
 #include "run/experiment_config.hpp"
 
 #include "base/config_reader.hpp"
+#include "engine/plant_wind.hpp"
 #include "run/config_migration.hpp"
 
 #include <filesystem>
+#include <optional>
 
 namespace morphogen {
 
@@ -63,6 +65,33 @@ void read_format_version(ObjectReader& top) {
 }
 }  // namespace
 
+namespace {
+// export_glb.wind_presets: names of engine/plant_wind.hpp's presets, as
+// grow's --wind-preset; only with "wind": true. Resolved only when given.
+void read_wind_presets(ObjectReader& options, PlantExportOptions& o) {
+    const json* names = options.raw("wind_presets");
+    if (names == nullptr) return;
+    const std::string path = options.path_of("wind_presets");
+    if (!names->is_array()) {
+        options.issues().add(path, "must be a list of preset names (color, uv, godot)");
+        return;
+    }
+    for (const json& name : *names) {
+        const std::optional<WindPreset> preset =
+            name.is_string() ? wind_preset_named(name.get<std::string>()) : std::nullopt;
+        if (!preset) {
+            options.issues().add(path, name.dump(-1, ' ', false, json::error_handler_t::replace) +
+                                           " is not a wind preset: the presets are color, uv and godot");
+            return;
+        }
+        o.wind_presets.push_back(*preset);
+    }
+    if (!o.wind_presets.empty() && !o.wind)
+        options.issues().add(path, "copies the wind data, so it needs \"wind\": true");
+    options.set_resolved("wind_presets", *names);
+}
+}  // namespace
+
 RunParams read_run_params(ObjectReader& reader) {
     RunParams p;
     p.seed = static_cast<std::uint64_t>(reader.integer("seed", static_cast<long long>(p.seed), 0, max_exact_integer));
@@ -81,6 +110,7 @@ RunParams read_run_params(ObjectReader& reader) {
         if (const double height = options.number("height", 0, 0, kMaxPlantHeightMetres); height > 0) o.height_m = height;
         o.lods = static_cast<int>(options.integer("lods", 0, 0, kMaxPlantLods));
         o.wind = options.boolean("wind", false);
+        read_wind_presets(options, o);
         options.finish();
         reader.set_resolved("export_glb", options.resolved());
     }

@@ -409,6 +409,8 @@ async function exportChosen() {
   if (height !== '') request.height = Number(height);
   if (lods !== '') request.lods = Number(lods);
   if ($('export-wind').checked) request.wind = true;
+  const presets = $('export-wind-presets').value.split(',').map((name) => name.trim()).filter((name) => name);
+  if (presets.length) request.wind_presets = presets;
   const written = await act('POST', '/api/export', request);
   if (!written) return;
   const out = $('export-result');

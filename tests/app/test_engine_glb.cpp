@@ -211,3 +211,64 @@ TEST_CASE("archive --pack packs a MAP-Elites run's elites and a GA run's populat
     CHECK(run_morphogen("archive " + q(run) + " --pack " + q(dir.path / "p3") + " --out " + q(dir.path / "o")).code == 2);
     CHECK_FALSE(fs::exists(dir.path / "p3"));
 }
+
+TEST_CASE("grow --wind-preset copies _WIND where engines read it; bad names and no --wind write nothing",
+          "[cli][engine][wind]") {
+    TempDir dir("engine-wind-presets");
+    const fs::path out = dir.path / "presets.glb";
+    const CliResult r =
+        run_morphogen("grow --random 4 --steps 60 --wind --wind-preset uv,color --wind-preset godot -o " + q(out));
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const tinygltf::Model model = parse_glb(read_text(out));
+    const auto& attributes = model.meshes.at(0).primitives.at(0).attributes;
+    for (const char* name : {"_WIND", "COLOR_0", "TEXCOORD_0", "TEXCOORD_1", "_CUSTOM0"}) CHECK(attributes.count(name) == 1);
+    CHECK(accessor_floats(model, attributes.at("_CUSTOM0")) == accessor_floats(model, attributes.at("_WIND")));
+
+    REQUIRE(run_morphogen("grow --random 4 --steps 60 --wind -o " + q(dir.path / "plain.glb")).code == 0);
+    const tinygltf::Model plain = parse_glb(read_text(dir.path / "plain.glb"));
+    CHECK(plain.meshes.at(0).primitives.at(0).attributes.size() == 3);  // POSITION, NORMAL, _WIND: no COLOR_0
+
+    const fs::path refused = dir.path / "refused.glb";
+    const CliResult bad = run_morphogen("grow --random 4 --steps 60 --wind --wind-preset color,unity -o " + q(refused));
+    CHECK(bad.code == 2);
+    CHECK_THAT(bad.output, Catch::Contains("--wind-preset 'unity': not a preset; the presets are color, uv and godot"));
+    const CliResult alone = run_morphogen("grow --random 4 --steps 60 --wind-preset uv -o " + q(refused));
+    CHECK(alone.code == 2);
+    CHECK_THAT(alone.output, Catch::Contains("--wind-preset uv: copies the wind data, so it needs --wind"));
+    const CliResult archive = run_morphogen("archive " + q(dir.path / "no_run") + " --out " + q(dir.path / "elites") +
+                                            " --wind-preset godot");
+    CHECK(archive.code == 2);
+    CHECK_THAT(archive.output, Catch::Contains("needs --wind"));
+    CHECK_FALSE(fs::exists(refused));
+    CHECK_FALSE(fs::exists(dir.path / "elites"));
+}
+
+TEST_CASE("run.export_glb.wind_presets is read as grow's --wind-preset, and refused without wind", "[cli][engine][wind]") {
+    TempDir dir("engine-best-presets");
+    std::string config = read_text(kElitesConfig);
+    const std::size_t at = config.find("\"export_every\": 1}");
+    config.replace(at, 18, R"("export_every": 1, "export_glb": {"wind": true, "wind_presets": ["color"]}})");
+    write_text(dir.path / "elites.json", config);
+    const CliResult r = run_morphogen("evolve " + q(dir.path / "elites.json") + " --out " + q(dir.path / "run"));
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const tinygltf::Model model = parse_glb(read_text(dir.path / "run" / "best" / "gen_0002.glb"));
+    const auto& attributes = model.meshes.at(0).primitives.at(0).attributes;
+    REQUIRE(attributes.count("COLOR_0") == 1);
+    const std::vector<float> wind = accessor_floats(model, attributes.at("_WIND"));
+    const std::vector<float> color = accessor_floats(model, attributes.at("COLOR_0"));
+    REQUIRE(color.size() == wind.size());
+    for (std::size_t v = 0; v < wind.size() / 4; ++v) CHECK(color[4 * v + 2] == wind[4 * v]);  // blue: the bend
+
+    for (const char* bad : {R"({"wind_presets": ["uv"]})", R"({"wind": true, "wind_presets": ["unity"]})",
+                            R"({"wind": true, "wind_presets": "uv"})"}) {
+        std::string refused = read_text(kElitesConfig);
+        refused.replace(refused.find("\"export_every\": 1}"), 18, std::string("\"export_every\": 1, \"export_glb\": ") + bad + "}");
+        write_text(dir.path / "bad.json", refused);
+        const CliResult no = run_morphogen("validate " + q(dir.path / "bad.json"));
+        INFO(bad << "\n" << no.output);
+        CHECK(no.code != 0);
+        CHECK_THAT(no.output, Catch::Contains("run.export_glb.wind_presets"));
+    }
+}

@@ -168,6 +168,18 @@ TEST_CASE("the server prints its address, serves the page and API, and refuses w
     CHECK(json::parse(exported->body) == json({{"genome", "exports/" + ids[1] + ".genome.json"},
                                                {"mesh", "exports/" + ids[1] + ".glb"}}));
     CHECK(std::filesystem::exists(tmp.path / "s" / "exports" / (ids[1] + ".glb")));
+    // Wind presets as grow's --wind-preset: written into the GLB; refused
+    // without wind or by a name that is not a preset, writing nothing.
+    auto presets = api.post("/api/export", {{"id", ids[1]}, {"wind", true}, {"wind_presets", {"uv"}}});
+    REQUIRE(status(presets) == 200);
+    const std::filesystem::path glb = tmp.path / "s" / "exports" / (ids[1] + ".glb");
+    const std::string bytes = read_text(glb);
+    CHECK(bytes.find("\"TEXCOORD_1\"") != std::string::npos);
+    CHECK(bytes.find("\"COLOR_0\"") == std::string::npos);
+    CHECK(status(api.post("/api/export", {{"id", ids[1]}, {"wind_presets", {"uv"}}})) == 400);
+    CHECK(status(api.post("/api/export", {{"id", ids[1]}, {"wind", true}, {"wind_presets", {"unity"}}})) == 400);
+    CHECK(status(api.post("/api/export", {{"id", ids[1]}, {"wind", true}, {"wind_presets", "uv"}})) == 400);
+    CHECK(read_text(glb) == bytes);
     auto lineage = api.get("/api/lineage");
     REQUIRE(status(lineage) == 200);
     CHECK(json::parse(lineage->body).at("nodes").size() == 2);

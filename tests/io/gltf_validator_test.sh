@@ -6,7 +6,9 @@
 # elites (also with levels of detail), the best of generation with
 # run.export_glb (GA with levels of detail and wind, MAP-Elites with wind
 # only), and species packs (every plant_<id>.glb and scatter.glb) of a
-# MAP-Elites and a GA run, with and without levels of detail and wind.
+# MAP-Elites and a GA run, with and without levels of detail and wind; each
+# wind preset (--wind-preset color, uv, godot) alone, all three with levels
+# of detail, and a pack with all three.
 # Usage: gltf_validator_test.sh MORPHOGEN SOURCE_DIR. Exit 77 (skipped) only
 # when node is not installed.
 set -euo pipefail
@@ -32,6 +34,10 @@ cd "$work"
 "$exe" grow --random 3 --steps 60 -o height_wind.glb --height 4 --wind >/dev/null
 "$exe" grow --random 3 --steps 200 -o lods.glb --lods 3 >/dev/null
 "$exe" grow --random 3 --steps 200 -o lods_height_wind.glb --lods 4 --height 4 --wind >/dev/null
+for preset in color uv godot; do
+  "$exe" grow --random 3 --steps 60 -o "preset_$preset.glb" --wind --wind-preset $preset >/dev/null
+done
+"$exe" grow --random 4 --steps 120 -o presets_lods.glb --lods 2 --wind --wind-preset color,uv,godot >/dev/null
 
 "$exe" evolve "$src/tests/app/fixtures/engine_elites.json" --out run >/dev/null 2>&1
 "$exe" archive run --out plain_elites >/dev/null
@@ -45,7 +51,7 @@ sed 's/"export_every": 1}/"export_every": 1, "export_glb": {"wind": true}}/' \
 "$exe" archive run --pack pack_plain >/dev/null
 "$exe" archive run --pack pack_lods_wind --lods 3 --wind --height 2 >/dev/null
 "$exe" archive engine_run --pack pack_ga_lods --lods 2 >/dev/null
-"$exe" archive engine_run --pack pack_ga_wind --wind >/dev/null
+"$exe" archive engine_run --pack pack_ga_wind --wind --wind-preset color --wind-preset uv,godot >/dev/null
 for pack in pack_plain pack_lods_wind pack_ga_lods pack_ga_wind; do
   test -f "$pack/manifest.json"
   test -f "$pack/scatter.glb"
