@@ -33,7 +33,7 @@ void ContactGrid::for_each_cell(const Box3& box, Fn&& fn) const {
             for (int k = lo[2]; k <= hi[2]; ++k) fn((i * cells_[1] + j) * cells_[2] + k);
 }
 
-void ContactGrid::build(const std::vector<Box3>& boxes, double cell_size) {
+void ContactGrid::build(const std::vector<Box3>& boxes, double cell_size, const std::vector<char>& marks) {
     Box3 bounds{Vec3::Zero(), Vec3::Zero()};
     if (!boxes.empty()) bounds = boxes.front();
     for (const Box3& box : boxes) bounds = bounds.merged(box);
@@ -54,7 +54,7 @@ void ContactGrid::build(const std::vector<Box3>& boxes, double cell_size) {
     std::vector<std::uint32_t>& next = fill_cursor_;
     next.assign(start_.begin(), start_.end() - 1);
     for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const Entry entry{outward(boxes[i]), static_cast<int>(i)};
+        const Entry entry{outward(boxes[i]), static_cast<int>(i), marks.empty() || marks[i] != 0 ? 1U : 0U};
         for_each_cell(boxes[i], [&](int c) { entries_[next[c]++] = entry; });
     }
     late_head_.assign(count, -1);
@@ -62,7 +62,7 @@ void ContactGrid::build(const std::vector<Box3>& boxes, double cell_size) {
 }
 
 void ContactGrid::insert(int id, const Box3& box) {
-    const Entry entry{outward(box), id};
+    const Entry entry{outward(box), id, 1U};
     for_each_cell(box, [&](int c) {
         late_.push_back({entry, late_head_[c]});
         late_head_[c] = static_cast<int>(late_.size()) - 1;

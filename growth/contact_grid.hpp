@@ -21,24 +21,39 @@ public:
 
     // Lists boxes[i] as id i, and nothing else, in cells of edge about
     // `cell_size` (> 0; made larger where the bounds would need too many).
-    void build(const std::vector<Box3>& boxes, double cell_size);
+    // `marks` (empty, or one per box): which boxes a marked_only query sees.
+    void build(const std::vector<Box3>& boxes, double cell_size, const std::vector<char>& marks = {});
     // Lists `box` as `id` too (id may be new, one past the last, or listed).
     void insert(int id, const Box3& box);
 
     // Calls fn(id) for every entry whose box meets `box` (closed), once per
     // cell they share: an id may come more than once, also with an older box.
+    // With `marked_only`, only the entries build() was told to mark. A cell's
+    // entries are screened without a branch per entry (most fail, and
+    // unpredictably), a block at a time, then fn runs on the ones that meet.
     template <class Fn>
-    void for_each_meeting(const Box3& box, Fn&& fn) const {
+    void for_each_meeting(const Box3& box, Fn&& fn, bool marked_only = false) const {
         const FloatBox query = outward(box);
+        const std::uint32_t need_mark = marked_only ? 1U : 0U;
         const std::array<int, 3> lo = cell_of(box.lo), hi = cell_of(box.hi);
+        constexpr std::uint32_t kBlock = 64;
+        int met[kBlock];
         for (int i = lo[0]; i <= hi[0]; ++i)
             for (int j = lo[1]; j <= hi[1]; ++j) {
                 const int row = (i * cells_[1] + j) * cells_[2];
-                for (std::uint32_t e = start_[row + lo[2]]; e < start_[row + hi[2] + 1]; ++e)
-                    if (entries_[e].box.meets(query)) fn(entries_[e].id);
+                const std::uint32_t end = start_[row + hi[2] + 1];
+                for (std::uint32_t block = start_[row + lo[2]]; block < end; block += kBlock) {
+                    const std::uint32_t stop = std::min(end, block + kBlock);
+                    int n = 0;
+                    for (std::uint32_t e = block; e < stop; ++e) {
+                        met[n] = entries_[e].id;
+                        n += static_cast<int>(entries_[e].box.meets(query) & (entries_[e].mark >= need_mark));
+                    }
+                    for (int k = 0; k < n; ++k) fn(met[k]);
+                }
                 for (int k = lo[2]; k <= hi[2]; ++k)
                     for (int e = late_head_[row + k]; e >= 0; e = late_[e].next)
-                        if (late_[e].entry.box.meets(query)) fn(late_[e].entry.id);
+                        if (late_[e].entry.box.meets(query) && late_[e].entry.mark >= need_mark) fn(late_[e].entry.id);
             }
     }
 
@@ -54,6 +69,7 @@ private:
     struct Entry {
         FloatBox box;
         int id;
+        std::uint32_t mark;  // 1: seen by marked_only queries
     };
     struct LateEntry {
         Entry entry;
