@@ -49,7 +49,13 @@ unsigned ContactGuard::touches(int v, int f, const std::vector<Vec3>& now, const
 void ContactGuard::refuse_tangled_fans(const TriMesh& mesh, const std::vector<char>& check,
                                        std::span<const int> neighbour_offsets, std::span<const int> neighbours) {
     for (int v = 0; v < mesh.num_vertices(); ++v) {
-        if (!check[v] || fan_certified(mesh, v, spokes_)) continue;
+        if (!check[v]) continue;
+        // A fan whose moving vertices are all refused already: its test could
+        // refuse nothing new, whatever it says (a refusal only ever adds).
+        bool open = moving_[v] && !refuse_[v];
+        for (int k = neighbour_offsets[v]; k < neighbour_offsets[v + 1] && !open; ++k)
+            open = moving_[neighbours[k]] && !refuse_[neighbours[k]];
+        if (!open || fan_certified(mesh, v, spokes_)) continue;
         if (moving_[v]) refuse_[v] = 1;
         for (int k = neighbour_offsets[v]; k < neighbour_offsets[v + 1]; ++k)
             if (moving_[neighbours[k]]) refuse_[neighbours[k]] = 1;
