@@ -33,7 +33,7 @@ void ContactGrid::for_each_cell(const Box3& box, Fn&& fn) const {
             for (int k = lo[2]; k <= hi[2]; ++k) fn((i * cells_[1] + j) * cells_[2] + k);
 }
 
-void ContactGrid::build(const std::vector<Box3>& boxes, double cell_size) {
+void ContactGrid::build(const std::vector<Box3>& boxes, double cell_size, const std::vector<char>& marks) {
     Box3 bounds{Vec3::Zero(), Vec3::Zero()};
     if (!boxes.empty()) bounds = boxes.front();
     for (const Box3& box : boxes) bounds = bounds.merged(box);
@@ -50,21 +50,23 @@ void ContactGrid::build(const std::vector<Box3>& boxes, double cell_size) {
     start_.assign(count + 1, 0);
     for (const Box3& box : boxes) for_each_cell(box, [&](int c) { ++start_[c + 1]; });
     for (std::size_t c = 0; c < count; ++c) start_[c + 1] += start_[c];
-    entries_.resize(start_[count]);
+    ids_.resize(start_[count]);
+    boxes_.resize(boxes.size());
     std::vector<std::uint32_t>& next = fill_cursor_;
     next.assign(start_.begin(), start_.end() - 1);
     for (std::size_t i = 0; i < boxes.size(); ++i) {
-        const Entry entry{outward(boxes[i]), static_cast<int>(i)};
-        for_each_cell(boxes[i], [&](int c) { entries_[next[c]++] = entry; });
+        boxes_[i] = {outward(boxes[i]), marks.empty() || marks[i] != 0 ? 1U : 0U};
+        for_each_cell(boxes[i], [&](int c) { ids_[next[c]++] = static_cast<int>(i); });
     }
     late_head_.assign(count, -1);
     late_.clear();
 }
 
 void ContactGrid::insert(int id, const Box3& box) {
-    const Entry entry{outward(box), id};
+    if (id >= static_cast<int>(boxes_.size())) boxes_.resize(static_cast<std::size_t>(id) + 1);
+    boxes_[id] = {outward(box), 1U};
     for_each_cell(box, [&](int c) {
-        late_.push_back({entry, late_head_[c]});
+        late_.push_back({id, late_head_[c]});
         late_head_[c] = static_cast<int>(late_.size()) - 1;
     });
 }

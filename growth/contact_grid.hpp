@@ -1,12 +1,14 @@
 #pragma once
 // The broad phase of the contact rule (docs/algorithm.md §5.7.1), rebuilt
 // every step: a dense uniform grid over the boxes' common bounds, each box
-// listed by id in every cell it overlaps, with the box kept once per id in
-// single precision (rounded outward). Small entries (an int) and direct cell
-// indices make the per-step build and the point queries cheap; a grown mesh
+// listed by id in every cell it overlaps, the box itself kept once per id in
+// single precision (rounded outward). Cells hold bare ids (4 bytes, so the
+// per-step build writes little) and the boxes, a few kB, stay in cache for
+// the queries; direct cell indices make the point queries cheap; a grown mesh
 // is compact, so the grid stays small. Boxes added after the build (a split's
-// or a flip's faces) go into per-cell chains. Coordinates beyond the grid
-// fall into its border cells, so nothing is missed.
+// or a flip's faces) go into per-cell chains, and replace the id's box.
+// Coordinates beyond the grid fall into its border cells, so nothing is
+// missed.
 #include "mesh/spatial_hash.hpp"
 
 #include <algorithm>
@@ -21,24 +23,40 @@ public:
 
     // Lists boxes[i] as id i, and nothing else, in cells of edge about
     // `cell_size` (> 0; made larger where the bounds would need too many).
-    void build(const std::vector<Box3>& boxes, double cell_size);
+    // `marks` (empty, or one per box): which boxes a marked_only query sees.
+    void build(const std::vector<Box3>& boxes, double cell_size, const std::vector<char>& marks = {});
     // Lists `box` as `id` too (id may be new, one past the last, or listed).
     void insert(int id, const Box3& box);
 
-    // Calls fn(id) for every entry whose box meets `box` (closed), once per
-    // cell they share: an id may come more than once, also with an older box.
+    // Calls fn(id) for every id whose box (the latest listed for it) meets
+    // `box` (closed), once per cell they share: an id may come more than once.
+    // With `marked_only`, only the ids build() was told to mark. A cell's ids
+    // are screened without a branch per id (most fail, and unpredictably), a
+    // block at a time, then fn runs on the ones that meet.
     template <class Fn>
-    void for_each_meeting(const Box3& box, Fn&& fn) const {
+    void for_each_meeting(const Box3& box, Fn&& fn, bool marked_only = false) const {
         const FloatBox query = outward(box);
+        const std::uint32_t need_mark = marked_only ? 1U : 0U;
         const std::array<int, 3> lo = cell_of(box.lo), hi = cell_of(box.hi);
+        constexpr std::uint32_t kBlock = 64;
+        int met[kBlock];
+        const auto listed = [&](int id) { return boxes_[id].meets(query) & (boxes_[id].mark >= need_mark); };
         for (int i = lo[0]; i <= hi[0]; ++i)
             for (int j = lo[1]; j <= hi[1]; ++j) {
                 const int row = (i * cells_[1] + j) * cells_[2];
-                for (std::uint32_t e = start_[row + lo[2]]; e < start_[row + hi[2] + 1]; ++e)
-                    if (entries_[e].box.meets(query)) fn(entries_[e].id);
+                const std::uint32_t end = start_[row + hi[2] + 1];
+                for (std::uint32_t block = start_[row + lo[2]]; block < end; block += kBlock) {
+                    const std::uint32_t stop = std::min(end, block + kBlock);
+                    int n = 0;
+                    for (std::uint32_t e = block; e < stop; ++e) {
+                        met[n] = ids_[e];
+                        n += static_cast<int>(listed(ids_[e]));
+                    }
+                    for (int k = 0; k < n; ++k) fn(met[k]);
+                }
                 for (int k = lo[2]; k <= hi[2]; ++k)
                     for (int e = late_head_[row + k]; e >= 0; e = late_[e].next)
-                        if (late_[e].entry.box.meets(query)) fn(late_[e].entry.id);
+                        if (listed(late_[e].id)) fn(late_[e].id);
             }
     }
 
@@ -51,12 +69,11 @@ private:
                    (lo[2] <= o.hi[2]) & (o.lo[2] <= hi[2]);
         }
     };
-    struct Entry {
-        FloatBox box;
-        int id;
+    struct ListedBox : FloatBox {
+        std::uint32_t mark;  // 1: seen by marked_only queries
     };
     struct LateEntry {
-        Entry entry;
+        int id;
         int next;
     };
     // The cell holding p, clamped into the grid. (A truncating cast, not
@@ -78,8 +95,9 @@ private:
     double inverse_cell_ = 1.0;
     std::array<int, 3> cells_{1, 1, 1};
     std::vector<std::uint32_t> start_;  // per cell + 1: where its ids begin
-    std::vector<Entry> entries_;
-    std::vector<int> late_head_;        // per cell: the last inserted entry, -1 = none
+    std::vector<int> ids_;              // by cell
+    std::vector<ListedBox> boxes_;      // per id
+    std::vector<int> late_head_;        // per cell: the last inserted chain entry, -1 = none
     std::vector<LateEntry> late_;
     std::vector<std::uint32_t> fill_cursor_;  // build()'s scratch: each cell's next free slot
 };

@@ -15,7 +15,7 @@ Box3 face_box(const std::vector<Vec3>& x, const Face& f) { return Box3::of(x[f[0
 }  // namespace
 
 void ContactGuard::list_faces(const std::vector<Vec3>& now, const std::vector<Vec3>& before,
-                              const std::vector<Face>& faces, double r) {
+                              const std::vector<Face>& faces, double r, const std::vector<char>& marks) {
     const std::size_t F = faces.size();
     boxes_.resize(F);
     double extent = 0.0;
@@ -26,7 +26,7 @@ void ContactGuard::list_faces(const std::vector<Vec3>& now, const std::vector<Ve
     // Cells about as large as a listed box: each box in a few cells, a point
     // query in one.
     const double cell = F > 0 && extent > 0.0 ? extent / static_cast<double>(F) : 1.0;
-    grid_.build(boxes_, cell);
+    grid_.build(boxes_, cell, marks);
     listed_ = true;
 }
 
@@ -49,7 +49,13 @@ unsigned ContactGuard::touches(int v, int f, const std::vector<Vec3>& now, const
 void ContactGuard::refuse_tangled_fans(const TriMesh& mesh, const std::vector<char>& check,
                                        std::span<const int> neighbour_offsets, std::span<const int> neighbours) {
     for (int v = 0; v < mesh.num_vertices(); ++v) {
-        if (!check[v] || fan_certified(mesh, v, spokes_)) continue;
+        if (!check[v]) continue;
+        // A fan whose moving vertices are all refused already: its test could
+        // refuse nothing new, whatever it says (a refusal only ever adds).
+        bool open = moving_[v] && !refuse_[v];
+        for (int k = neighbour_offsets[v]; k < neighbour_offsets[v + 1] && !open; ++k)
+            open = moving_[neighbours[k]] && !refuse_[neighbours[k]];
+        if (!open || fan_certified(mesh, v, spokes_)) continue;
         if (moving_[v]) refuse_[v] = 1;
         for (int k = neighbour_offsets[v]; k < neighbour_offsets[v + 1]; ++k)
             if (moving_[neighbours[k]]) refuse_[neighbours[k]] = 1;
@@ -67,18 +73,18 @@ void ContactGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before, s
     bool any = false;
     for (int v = 0; v < V; ++v) any |= (moving_[v] = x[v] != before[v]) != 0;
     if (!any) return;
-    list_faces(x, before, faces, contact_distance);
     refuse_.assign(V, 0);
     face_moving_.resize(faces.size());
     for (std::size_t f = 0; f < faces.size(); ++f)
         face_moving_[f] = moving_[faces[f][0]] | moving_[faces[f][1]] | moving_[faces[f][2]];
+    list_faces(x, before, faces, contact_distance, face_moving_);
     // 1. Every vertex against the faces listed near its path; a pair counts
     // when one of its two moves. Decided from the proposed state alone.
     for (int v = 0; v < V; ++v) {
         const Box3 path = Box3::of(before[v], x[v], x[v]);
         const bool v_moves = moving_[v] != 0;
+        // A vertex that stays meets only the moving faces (marked in the grid).
         grid_.for_each_meeting(path, [&](int f) {
-            if (!(v_moves || face_moving_[f])) return;
             const Face& t = faces[f];
             if (t[0] == v || t[1] == v || t[2] == v) return;
             const unsigned corners = touches(v, f, x, before, faces, contact_distance);
@@ -87,7 +93,7 @@ void ContactGuard::settle_move(TriMesh& mesh, const std::vector<Vec3>& before, s
             if (moving_[v]) refuse_[v] = 1;
             for (int k = 0; k < 3; ++k)
                 if ((corners >> k & 1U) != 0 && moving_[t[k]]) refuse_[t[k]] = 1;
-        });
+        }, !v_moves);
     }
     // 2. Every fan the move changes must stay certified (no two of its faces
     // can meet): the faces around a vertex are too close for the distance.

@@ -42,9 +42,10 @@ public:
     std::uint64_t refused = 0;
 
 private:
-    // Lists every face's box over the move (before to now), grown by r.
+    // Lists every face's box over the move (before to now), grown by r;
+    // `marks` (empty or per face) as ContactGrid::build's.
     void list_faces(const std::vector<Vec3>& now, const std::vector<Vec3>& before, const std::vector<Face>& faces,
-                    double r);
+                    double r, const std::vector<char>& marks = {});
     // Whether vertex v and face f form a contact pair (v not in f): the
     // corners of f that carry the nearest point (bit k: corner k), else 0.
     static unsigned touches(int v, int f, const std::vector<Vec3>& now, const std::vector<Vec3>& before,

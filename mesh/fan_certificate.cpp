@@ -1,5 +1,7 @@
 #include "mesh/fan_certificate.hpp"
 
+#include <span>
+
 namespace morphogen {
 
 namespace {
@@ -30,7 +32,7 @@ namespace {
 
 // The certificate for one direction N (any vector: the proof holds for the
 // exact N it is given).
-bool certified_along(const Vec3& normal, const std::vector<Vec3>& spokes) {
+bool certified_along(const Vec3& normal, std::span<const Vec3> spokes, std::span<const Vec3> crosses) {
     const std::size_t n = spokes.size();
     const Vec3 normal_abs = normal.cwiseAbs();
     // Every face positively oriented along N: N . (e_k x e_k+1) > 0. The
@@ -39,7 +41,7 @@ bool certified_along(const Vec3& normal, const std::vector<Vec3>& spokes) {
     for (std::size_t k = 0; k < n; ++k) {
         const Vec3& a = spokes[k];
         const Vec3& b = spokes[k + 1 == n ? 0 : k + 1];
-        if (certain_sign(normal.dot(a.cross(b)), 1e-14 * normal_abs.dot(cross_abs(a, b))) <= 0) return false;
+        if (certain_sign(normal.dot(crosses[k]), 1e-14 * normal_abs.dot(cross_abs(a, b))) <= 0) return false;
     }
     // Every turn from one spoke to the next is then in (0, pi); the ring winds
     // once iff, counted from a direction r inside face 0's angle, the spokes
@@ -72,25 +74,28 @@ bool certified_along(const Vec3& normal, const std::vector<Vec3>& spokes) {
 
 }  // namespace
 
-bool fan_certified(const TriMesh& mesh, int v, std::vector<Vec3>& spokes) {
+bool fan_certified(const TriMesh& mesh, int v, std::vector<Vec3>& scratch) {
     const std::vector<Vec3>& x = mesh.positions();
     const Vec3 centre = x[v];
-    spokes.clear();
-    mesh.for_each_neighbour(v, [&](int u) { spokes.push_back(x[u] - centre); });
-    const std::size_t n = spokes.size();
+    scratch.clear();
+    mesh.for_each_neighbour(v, [&](int u) { scratch.push_back(x[u] - centre); });
+    const std::size_t n = scratch.size();
     if (n < 3) return false;
+    // The spokes, then each face's cross product e_k x e_k+1 (computed once).
+    scratch.resize(2 * n);
+    for (std::size_t k = 0; k < n; ++k) scratch[n + k] = scratch[k].cross(scratch[k + 1 == n ? 0 : k + 1]);
+    const std::span<const Vec3> spokes(scratch.data(), n), crosses(scratch.data() + n, n);
     // N: the faces' cross products summed (their area-weighted normal), or,
     // where a large face outweighs a fold (a ridge between faces of unequal
     // size), their unit normals summed.
     Vec3 area_weighted = Vec3::Zero(), unit_sum = Vec3::Zero();
-    for (std::size_t k = 0; k < n; ++k) area_weighted += spokes[k].cross(spokes[k + 1 == n ? 0 : k + 1]);
-    if (certified_along(area_weighted, spokes)) return true;
+    for (std::size_t k = 0; k < n; ++k) area_weighted += crosses[k];
+    if (certified_along(area_weighted, spokes, crosses)) return true;
     for (std::size_t k = 0; k < n; ++k) {
-        const Vec3 cross = spokes[k].cross(spokes[k + 1 == n ? 0 : k + 1]);
-        const double length = cross.norm();
-        if (length > 0.0) unit_sum += cross / length;
+        const double length = crosses[k].norm();
+        if (length > 0.0) unit_sum += crosses[k] / length;
     }
-    return certified_along(unit_sum, spokes);
+    return certified_along(unit_sum, spokes, crosses);
 }
 
 }  // namespace morphogen

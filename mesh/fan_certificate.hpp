@@ -20,7 +20,8 @@
 namespace morphogen {
 
 // Whether the fan of v, at the mesh's positions, is certified as above.
-// `spokes` is scratch (u_k - v, in the order of the ring).
-bool fan_certified(const TriMesh& mesh, int v, std::vector<Vec3>& spokes);
+// `scratch` holds the spokes (u_k - v, in the order of the ring) and the
+// faces' cross products.
+bool fan_certified(const TriMesh& mesh, int v, std::vector<Vec3>& scratch);
 
 }  // namespace morphogen

@@ -3,12 +3,15 @@
 // keys, and growth against the reference implementation of §1.4 in both modes.
 #include "base/config_reader.hpp"
 #include "growth/contact_geometry.hpp"
+#include "growth/contact_grid.hpp"
 #include "growth/contact_guard.hpp"
 #include "growth/growth.hpp"
 #include "tests/support/reference_compare.hpp"
 
 #include <catch2/catch.hpp>
 
+#include <random>
+#include <set>
 #include <thread>
 
 using namespace morphogen;
@@ -99,6 +102,55 @@ TEST_CASE("the contact measure: distance to a triangle, and the corners of the n
     check(Vec3(2, 2, 0), 2.0, 0b110);         // nearest side b-c
     check(Vec3(0, 3, 1), 2.0, 0b100);         // nearest corner c
     CHECK(distance_to_triangle(Vec3(1, 1, 1), a, Vec3(1, 0, 0), Vec3(2, 0, 0)).squared == Approx(2.0));  // collinear
+}
+
+TEST_CASE("the contact grid finds every listed box a query meets, marked and late ones included", "[contact]") {
+    // Random boxes of the sizes the rule lists (faces grown by r), a third of
+    // them marked; then some ids listed again elsewhere (a split's or a flip's
+    // faces) and a few new ones. Every query is checked against brute force
+    // over each id's latest box; an id may come more than once, never wrongly.
+    std::mt19937 random(7);
+    std::uniform_real_distribution<double> where(-3.0, 3.0), size(0.05, 0.9);
+    const auto random_box = [&] {
+        const Vec3 lo(where(random), where(random), where(random));
+        return Box3{lo, lo + Vec3(size(random), size(random), size(random))};
+    };
+    std::vector<Box3> boxes(300);
+    std::vector<char> marks(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        boxes[i] = random_box();
+        marks[i] = i % 3 == 0;
+    }
+    ContactGrid grid;
+    grid.build(boxes, 0.6, marks);
+    for (int id = 0; id < 60; ++id) {  // listed again: the latest box counts (and is marked)
+        boxes[id * 5] = random_box();
+        marks[id * 5] = 1;
+        grid.insert(id * 5, boxes[id * 5]);
+    }
+    for (int k = 0; k < 5; ++k) {  // new ids, some far outside the built bounds
+        boxes.push_back(k % 2 == 0 ? random_box() : Box3{Vec3(9, 9, 9), Vec3(9.5, 9.5, 9.5)});
+        marks.push_back(1);
+        grid.insert(static_cast<int>(boxes.size()) - 1, boxes.back());
+    }
+    for (int q = 0; q < 400; ++q) {
+        const Vec3 p(where(random) * 1.2 + (q % 7 == 0 ? 6.0 : 0.0), where(random), where(random));
+        const Box3 query{p, p + Vec3(0.1, 0.05, 0.02) * (q % 4)};
+        for (const bool marked_only : {false, true}) {
+            std::set<int> found;
+            grid.for_each_meeting(query, [&](int id) { found.insert(id); }, marked_only);
+            std::set<int> expected;
+            for (std::size_t i = 0; i < boxes.size(); ++i)
+                if (boxes[i].overlaps(query) && (!marked_only || marks[i])) expected.insert(static_cast<int>(i));
+            // Every meeting box is found; a found one meets the query up to
+            // the outward rounding to floats.
+            for (const int id : expected) CHECK(found.count(id) == 1);
+            for (const int id : found) {
+                CHECK((!marked_only || marks[id]));
+                CHECK(boxes[id].inflated(1e-5).overlaps(query));
+            }
+        }
+    }
 }
 
 TEST_CASE("touch on a hand-worked slab: exactly the vertices of a contact stay", "[contact]") {
