@@ -3,6 +3,7 @@
 // meshes never self-intersect, where "allow" grows many that do.
 #include "fitness/cgal_geometry.hpp"
 #include "growth/genome_grower.hpp"
+#include "tests/support/sanitizers.hpp"
 #include "tests/support/test_genomes.hpp"
 
 #include <catch2/catch.hpp>
@@ -28,6 +29,10 @@ GrowthParams branching(GrowthParams params) {
 bool grows_self_intersecting(const Network& network, const GrowthParams& params, GrowthWorkspace& workspace) {
     return mesh_self_intersects(GenomeGrower(NetworkParams{}, params).grow(network, workspace).mesh.view());
 }
+
+// The 60-step tests' genomes per block of four: 1000 in all, a fifth of them
+// under the sanitizers (tests/support/sanitizers.hpp).
+constexpr int kBlock = morphogen::testing::whole_or_under_sanitizers(250, 50);
 
 // Genomes [first, first + count) of random_test_genome (init range 2, as
 // evolution's default): how many grow self-intersecting meshes.
@@ -64,7 +69,7 @@ TEST_CASE("1000 random genomes grown with collisions prevented never self-inters
     params.steps = 60;
     params.max_vertices = 1500;
     const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
-    CHECK(count_self_intersecting(with(params, Collisions::prevent), 1 + 250 * block, 250) == 0);
+    CHECK(count_self_intersecting(with(params, Collisions::prevent), 1 + 250 * block, kBlock) == 0);
 }
 
 TEST_CASE("the check can fail: growth that allows collisions self-intersects", "[collision]") {
@@ -72,8 +77,8 @@ TEST_CASE("the check can fail: growth that allows collisions self-intersects", "
     GrowthParams params;
     params.steps = 60;
     params.max_vertices = 1500;
-    const int allowed = count_self_intersecting(with(params, Collisions::allow), 1, 1000);
-    WARN(allowed << " of 1000 genomes self-intersect when collisions are allowed (60 steps)");
+    const int allowed = count_self_intersecting(with(params, Collisions::allow), 1, 4 * kBlock);
+    WARN(allowed << " of " << 4 * kBlock << " genomes self-intersect when collisions are allowed (60 steps)");
     CHECK(allowed > 0);
 }
 
@@ -112,15 +117,15 @@ TEST_CASE("1000 random genomes in the branching mode, collisions prevented, neve
     params.steps = 60;
     params.max_vertices = 1500;
     const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
-    CHECK(count_self_intersecting(with(branching(params), Collisions::prevent), 1 + 250 * block, 250) == 0);
+    CHECK(count_self_intersecting(with(branching(params), Collisions::prevent), 1 + 250 * block, kBlock) == 0);
 }
 
 TEST_CASE("the check can fail in the branching mode too", "[collision][branching]") {
     GrowthParams params;
     params.steps = 60;
     params.max_vertices = 1500;
-    const int allowed = count_self_intersecting(with(branching(params), Collisions::allow), 1, 1000);
-    WARN(allowed << " of 1000 genomes self-intersect in the branching mode when collisions are allowed (60 steps)");
+    const int allowed = count_self_intersecting(with(branching(params), Collisions::allow), 1, 4 * kBlock);
+    WARN(allowed << " of " << 4 * kBlock << " genomes self-intersect in the branching mode when collisions are allowed (60 steps)");
     CHECK(allowed > 0);
 }
 
