@@ -76,7 +76,7 @@ TEST_CASE("wind presets are named color, uv and godot, and nothing else", "[engi
 }
 
 TEST_CASE("each preset copies _WIND's values per vertex on every level", "[engine][wind][lods]") {
-    const Grown grown = grow_dated(11, 120);
+    const Grown grown = grow_dated(12, 120);
     const GrownPlant plant{.mesh = grown.state.mesh.view(), .birth_steps = grown.births, .steps = 120};
     for (const auto& [preset_name, layout] : kLayout) {
         INFO(preset_name);
