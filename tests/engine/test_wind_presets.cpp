@@ -9,6 +9,7 @@
 #include "growth/genome_grower.hpp"
 #include "io/plant_glb.hpp"
 #include "tests/engine/glb_reader.hpp"
+#include "tests/engine/grow_dated.hpp"
 #include "tests/support/test_genomes.hpp"
 
 #include <catch2/catch.hpp>
@@ -20,21 +21,8 @@ using namespace morphogen;
 
 namespace {
 
-struct Grown {
-    GrowthState state;
-    std::vector<int> births;
-};
-
-Grown grow_dated(std::uint64_t seed, int steps) {
-    GrowthParams growth;
-    growth.steps = steps;
-    const GenomeGrower grower(NetworkParams{}, growth);
-    const Network network(testing::random_test_genome(grower.layers(), seed));
-    BirthSteps births(grower.seed().mesh.num_vertices());
-    GrowthWorkspace workspace;
-    GrowthState state = grower.grow(network, workspace, births.observer());
-    return {std::move(state), births.steps()};
-}
+using testing::Grown;
+using testing::grow_dated;
 
 PlantRecord record_w() {
     PlantRecord record;

@@ -1,0 +1,31 @@
+#pragma once
+// A random genome grown with the step each vertex was born at (the wind
+// data's flutter channel reads it): the engine tests' shared plant.
+#include "engine/birth_steps.hpp"
+#include "growth/genome_grower.hpp"
+#include "tests/support/test_genomes.hpp"
+
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+namespace morphogen::testing {
+
+struct Grown {
+    GrowthState state;
+    std::vector<int> births;
+};
+
+// random_test_genome(seed) grown for `steps` steps at the default settings.
+inline Grown grow_dated(std::uint64_t seed, int steps) {
+    GrowthParams growth;
+    growth.steps = steps;
+    const GenomeGrower grower(NetworkParams{}, growth);
+    const Network network(random_test_genome(grower.layers(), seed));
+    BirthSteps births(grower.seed().mesh.num_vertices());
+    GrowthWorkspace workspace;
+    GrowthState state = grower.grow(network, workspace, births.observer());
+    return {std::move(state), births.steps()};
+}
+
+}  // namespace morphogen::testing
