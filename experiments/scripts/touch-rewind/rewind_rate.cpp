@@ -20,7 +20,7 @@ using namespace morphogen;
 
 int main(int argc, char** argv) {
     if (argc < 4) {
-        std::fprintf(stderr, "usage: rewind_rate paper|branching default|tree N\n");
+        std::fprintf(stderr, "usage: rewind_rate paper|branching default|tree|tree.json N\n");
         return 2;
     }
     const std::string mode = argv[1], size = argv[2];
@@ -28,9 +28,13 @@ int main(int argc, char** argv) {
     GrowthParams params;
     params.collisions = Collisions::touch;
     if (mode == "branching") params.mode = GrowthMode::branching;
-    if (size == "tree") {  // configs/tree.json's sizes
+    if (size == "tree" || size == "tree.json") {  // configs/tree.json's sizes
         params.steps = 150;
         params.max_vertices = 1000;
+    }
+    if (size == "tree.json") {  // and its signals (branching mode only)
+        params.exposure = true;
+        params.signal_diffusion = 8;
     }
     const GenomeGrower grower(NetworkParams{}, params);
     GrowthWorkspace workspace;

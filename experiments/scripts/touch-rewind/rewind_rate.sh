@@ -12,9 +12,7 @@ g++ -std=c++20 -O2 -I. -I/usr/include/eigen3 experiments/scripts/touch-rewind/re
   build/base/libmorphogen_base.a -ltinygltf -lgmp -lmpfr -lpthread -o "$out/rewind_rate"
 echo "| mode | settings | rewound | rate | steps lost (median) | steps lost (max) | mean vertices | seconds |"
 echo "|---|---|---|---|---|---|---|---|"
-for mode in paper branching; do
-  for size in default tree; do
-    nice -n 10 "$out/rewind_rate" "$mode" "$size" "$n" | tee "$out/log" >&2
-    tail -1 "$out/log"
-  done
+for row in "paper default" "paper tree" "branching default" "branching tree" "branching tree.json"; do
+  nice -n 10 "$out/rewind_rate" $row "$n" | tee "$out/log" >&2
+  tail -1 "$out/log"
 done
