@@ -48,19 +48,21 @@ GrowthState GenomeGrower::grow(const Network& network, GrowthWorkspace& workspac
                                GrowthObserver* phases) const {
     const Grower grower(network, growth_);
     if (!fail_safe_) return grower.grow(seed_, workspace, after_step, phases);
-    const bool observed = after_step || phases != nullptr;
-    // The common case, unobserved: one growth and one check.
+    // The common case: one growth and one check. A phases observer alone
+    // (bench's clock) sees the work as it is done: every step of this growth,
+    // then the check, and the search for k where it fails, as one settle
+    // phase outside the steps (collision work).
     SelfIntersectionCheck check;
-    GrowthState state = grower.grow(seed_, workspace);
-    // The check, and the search for k where it fails, are collision work:
-    // an observer of phases sees them as one settle phase (bench's collide),
-    // outside every step.
-    if (phases != nullptr) phases->begin(GrowthPhase::settle, state, workspace);
+    GrowthState state = grower.grow(seed_, workspace, {}, after_step ? nullptr : phases);
+    if (!after_step && phases != nullptr) phases->begin(GrowthPhase::settle, state, workspace);
     if (check.intersects(state.mesh)) state = last_clean_state(grower, seed_, growth_.steps, workspace, check);
-    if (phases != nullptr) phases->end(GrowthPhase::settle, state, workspace);
-    if (!observed) return state;
-    // Observers see exactly the steps of the growth returned: it is grown
-    // again, now that its length is known.
+    if (!after_step) {
+        if (phases != nullptr) phases->end(GrowthPhase::settle, state, workspace);
+        return state;
+    }
+    // A step observer (wind data's birth steps, an animation) sees exactly
+    // the steps of the growth returned: it is grown again, now that its
+    // length is known, with both observers.
     return grow_steps(grower, seed_, state.steps_done, workspace, after_step, phases);
 }
 

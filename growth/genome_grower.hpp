@@ -31,9 +31,10 @@ public:
     // growth stopped at its last clean step k, before the first step that
     // self-intersects (steps_done == k); that is exactly the state growing
     // the genome for k steps gives. Observers see only the steps of the
-    // growth returned (with observers it is grown twice: first to find k),
-    // and `phases` sees the check, and the search for k, as one settle
-    // phase before the steps.
+    // growth returned (with `after_step` it is grown twice: first, unobserved,
+    // to find k). `phases` alone (a clock) sees the work as it is done: every
+    // step of the one growth, then the check and the search for k as one
+    // settle phase.
     GrowthState grow(const Network& network, GrowthWorkspace& workspace, const StepObserver& after_step = {},
                      GrowthObserver* phases = nullptr) const;
     // The same for a genome's parameters laid out for layers() (§6.1);

@@ -424,11 +424,16 @@ TEST_CASE("touch's fail-safe: observers see exactly the steps of the growth retu
             CHECK(seen[t] == t);
             CHECK(steps_done[t] == t + 1);
         }
-        // One think per step returned; the check (and the search for k) is
-        // one settle phase outside the steps, on top of each step's own.
+        // Beside a step observer, phases see the steps returned and no more.
         CHECK(phases.count(PhaseRecorder::Hook::begin, GrowthPhase::think) == k);
-        CHECK(phases.count(PhaseRecorder::Hook::begin, GrowthPhase::settle) == k + 1);
-        CHECK(phases.count(PhaseRecorder::Hook::end, GrowthPhase::settle) == k + 1);
+        CHECK(phases.count(PhaseRecorder::Hook::begin, GrowthPhase::settle) == k);
+        // Alone (bench's clock), they see the work done: one growth of every
+        // step, then the check (and the search for k) as one more settle.
+        PhaseRecorder clock;
+        CHECK(same_state(grower.grow(network, workspace, {}, &clock), unobserved));
+        CHECK(clock.count(PhaseRecorder::Hook::begin, GrowthPhase::think) == params.steps);
+        CHECK(clock.count(PhaseRecorder::Hook::begin, GrowthPhase::settle) == params.steps + 1);
+        CHECK(clock.count(PhaseRecorder::Hook::end, GrowthPhase::settle) == params.steps + 1);
     }
 }
 
