@@ -25,6 +25,16 @@ public:
     // (Grower::grow, with its ConfigError for a network that does not fit
     // the growth). `workspace` may be reused from genome to genome, one per
     // thread; `after_step` and `phases` as Grower::grow takes them.
+    // With growth.collisions "touch" (from a seed that does not
+    // self-intersect), the fail-safe of docs/algorithm.md §5.7.1: a grown
+    // mesh that self-intersects (the exact rule of §5.7) is replaced by the
+    // growth stopped at its last clean step k, before the first step that
+    // self-intersects (steps_done == k); that is exactly the state growing
+    // the genome for k steps gives. Observers see only the steps of the
+    // growth returned (with `after_step` it is grown twice: first, unobserved,
+    // to find k). `phases` alone (a clock) sees the work as it is done: every
+    // step of the one growth, then the check and the search for k as one
+    // settle phase.
     GrowthState grow(const Network& network, GrowthWorkspace& workspace, const StepObserver& after_step = {},
                      GrowthObserver* phases = nullptr) const;
     // The same for a genome's parameters laid out for layers() (§6.1);
@@ -37,6 +47,7 @@ private:
     std::vector<int> layers_;
     GrowthParams growth_;
     Seed seed_;
+    bool fail_safe_ = false;  // "touch" from a clean seed (§5.7.1)
 };
 
 }  // namespace morphogen

@@ -1,8 +1,10 @@
-// growth.collisions "prevent" (docs/algorithm.md §5.7) against the fitness
-// side's own check, CGAL's does_self_intersect (mesh_self_intersects): grown
-// meshes never self-intersect, where "allow" grows many that do.
+// growth.collisions "prevent" (docs/algorithm.md §5.7) and "touch" with its
+// fail-safe (§5.7.1) against the fitness side's own check, CGAL's
+// does_self_intersect (mesh_self_intersects): grown meshes never
+// self-intersect, where "allow" grows many that do.
 #include "fitness/cgal_geometry.hpp"
 #include "growth/genome_grower.hpp"
+#include "growth/self_intersection_check.hpp"
 #include "tests/support/sanitizers.hpp"
 #include "tests/support/test_genomes.hpp"
 
@@ -150,42 +152,108 @@ TEST_CASE("the same 1000 genomes in the branching mode self-intersect when colli
     CHECK(allowed > 0);
 }
 
-// growth.collisions "touch" (docs/algorithm.md §5.7.1) is a cheap margin, not
-// a proof: a grown mesh is checked once at the end (fitness.reject_self_intersecting,
-// §10.3). The rates are bounded and reported.
-TEST_CASE("touch: at most 1 % of random genomes grow self-intersecting meshes (60 steps)", "[collision][contact]") {
+// growth.collisions "touch" (docs/algorithm.md §5.7.1) is a cheap margin,
+// and its fail-safe makes it clean by construction: a mesh that
+// self-intersects goes back to its last clean step.
+
+namespace {
+
+// configs/tree.json's sizes (the branching mode's tree config; the paper's
+// mode at the same sizes).
+GrowthParams tree_sizes(GrowthParams params) {
+    params.steps = 150;
+    params.max_vertices = 1000;
+    return params;
+}
+
+// Genomes [first, first + count) grown with "touch": how many self-intersect
+// by CGAL's check (none should); how many the fail-safe rewound is reported.
+int count_touch_self_intersecting(const GrowthParams& params, std::uint64_t first, int count, double range = 2.0) {
+    const GrowthParams touch = with(params, Collisions::touch);
+    const GenomeGrower grower(NetworkParams{}, touch);
+    GrowthWorkspace workspace;
+    int bad = 0, rewound = 0;
+    for (std::uint64_t g = first; g < first + count; ++g) {
+        const GrowthState state = grower.grow(Network(random_test_genome(default_layers, g, range)), workspace);
+        rewound += state.steps_done < touch.steps ? 1 : 0;
+        if (mesh_self_intersects(state.mesh.view())) {
+            ++bad;
+            UNSCOPED_INFO("genome " << g << " (range " << range << ") self-intersects");
+        }
+    }
+    WARN(rewound << " of " << count << " genomes from " << first << " rewound by touch's fail-safe ("
+                 << (touch.mode == GrowthMode::branching ? "branching" : "paper") << " mode, " << touch.steps
+                 << " steps, range " << range << ")");
+    return bad;
+}
+
+// A quarter of the genomes of the default-size blocks below, under the
+// sanitizers a tenth of that.
+constexpr int kTouchBlock = morphogen::testing::whole_or_under_sanitizers(25, 5);
+
+}  // namespace
+
+TEST_CASE("touch: 1000 random genomes never self-intersect (60 steps), both modes", "[collision][contact]") {
     GrowthParams params;
     params.steps = 60;
     params.max_vertices = 1500;
-    for (const GrowthParams& mode : {params, branching(params)}) {
-        const int bad = count_self_intersecting(with(mode, Collisions::touch), 1, 250);
-        WARN(bad << " of 250 genomes self-intersect with touch (60 steps, "
-                 << (mode.mode == GrowthMode::branching ? "branching" : "paper") << " mode)");
-        CHECK(bad <= 2);
-    }
+    const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
+    for (const GrowthParams& mode : {params, branching(params)})
+        CHECK(count_touch_self_intersecting(mode, 1 + 250 * block, kBlock) == 0);
 }
 
-TEST_CASE("touch: hostile genomes (saturated outputs or wide weights), the check at the end", "[collision][contact]") {
+TEST_CASE("touch: random genomes at the default settings and at tree.json's never self-intersect", "[collision][contact]") {
+    // Genomes 51-150: 73 self-intersects without the fail-safe (branching
+    // mode, default settings; tests/growth/test_contact_rule.cpp).
+    const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
+    for (const GrowthParams& settings : {GrowthParams{}, tree_sizes(GrowthParams{})})
+        for (const GrowthParams& mode : {settings, branching(settings)})
+            CHECK(count_touch_self_intersecting(mode, 51 + 25 * block, kTouchBlock) == 0);
+}
+
+TEST_CASE("touch: hostile genomes (saturated outputs or wide weights) never self-intersect", "[collision][contact]") {
     for (const GrowthParams& mode : {GrowthParams{}, branching(GrowthParams{})}) {
-        const char* name = mode.mode == GrowthMode::branching ? "branching" : "paper";
-        INFO(name << " mode");
+        INFO((mode.mode == GrowthMode::branching ? "branching" : "paper") << " mode");
         GrowthWorkspace workspace;
         CHECK_FALSE(grows_self_intersecting(saturated_genome(), with(mode, Collisions::touch), workspace));
         // The most folded growth: outputs flip between 0 and 1 from vertex to
-        // vertex. Not a proof (§5.7.1): the rate is bounded, and reported.
-        const int bad = count_self_intersecting(with(mode, Collisions::touch), 1, 32, 20.0);
-        WARN(bad << " of 32 wide-weight genomes self-intersect with touch (" << name << " mode)");
-        CHECK(bad <= 3);  // measured: 0 (paper), 2 (branching)
+        // vertex (without the fail-safe, 2 of these 32 self-intersected in
+        // the branching mode).
+        CHECK(count_touch_self_intersecting(mode, 1, 32, 20.0) == 0);
     }
 }
 
-TEST_CASE("touch: 1000 random genomes at the default settings, the self-intersection rate", "[.][collision-slow]") {
-    // The paper's mode stays within 1 %; the branching mode does not (about
-    // 2 %, experiments/2026-11-27-contact-rule.md): bounded here as measured.
-    for (const auto& [mode, bound] : {std::pair{GrowthParams{}, 10}, std::pair{branching(GrowthParams{}), 30}}) {
-        const int bad = count_self_intersecting(with(mode, Collisions::touch), 1, 1000);
-        WARN(bad << " of 1000 genomes self-intersect with touch at the default settings ("
-                 << (mode.mode == GrowthMode::branching ? "branching" : "paper") << " mode)");
-        CHECK(bad <= bound);
+TEST_CASE("the fail-safe's whole-mesh check agrees with CGAL's", "[collision][contact]") {
+    // Meshes grown with "allow", many of them self-intersecting.
+    GrowthParams params;
+    params.steps = 60;
+    params.max_vertices = 1500;
+    SelfIntersectionCheck check;
+    int intersecting = 0;
+    const int count = morphogen::testing::whole_or_under_sanitizers(100, 20);
+    for (const GrowthParams& mode : {params, branching(params)}) {
+        const GenomeGrower grower(NetworkParams{}, with(mode, Collisions::allow));
+        GrowthWorkspace workspace;
+        for (std::uint64_t g = 1; g <= static_cast<std::uint64_t>(count); ++g) {
+            const TriMesh mesh = grower.grow(Network(random_test_genome(default_layers, g)), workspace).mesh;
+            const bool cgal = mesh_self_intersects(mesh.view());
+            INFO("genome " << g);
+            CHECK(check.intersects(mesh) == cgal);
+            intersecting += cgal ? 1 : 0;
+        }
     }
+    CHECK(intersecting > 0);
+    CHECK(intersecting < 2 * count);
+}
+
+TEST_CASE("touch: 1000 random genomes in the paper's mode never self-intersect, default settings and tree.json's",
+          "[.][collision-slow]") {
+    for (const GrowthParams& settings : {GrowthParams{}, tree_sizes(GrowthParams{})})
+        CHECK(count_touch_self_intersecting(settings, 1, 1000) == 0);
+}
+
+TEST_CASE("touch: 1000 random genomes in the branching mode never self-intersect, default settings and tree.json's",
+          "[.][collision-slow]") {
+    for (const GrowthParams& settings : {GrowthParams{}, tree_sizes(GrowthParams{})})
+        CHECK(count_touch_self_intersecting(branching(settings), 1, 1000) == 0);
 }

@@ -1,11 +1,17 @@
 // growth.collisions "touch" (docs/algorithm.md §5.7.1): the measure, the
 // rule on a hand-worked slab (contacts, crossings, tangled fans, flips), its
-// keys, and growth against the reference implementation of §1.4 in both modes.
+// keys, growth against the reference implementation of §1.4 in both modes,
+// and the fail-safe: a genome whose mesh self-intersects goes back to its
+// last clean step.
 #include "base/config_reader.hpp"
 #include "growth/contact_geometry.hpp"
 #include "growth/contact_grid.hpp"
 #include "growth/contact_guard.hpp"
+#include "growth/genome_grower.hpp"
 #include "growth/growth.hpp"
+#include "growth/self_intersection_check.hpp"
+#include "mesh/face_pair.hpp"
+#include "tests/support/phase_recorder.hpp"
 #include "tests/support/reference_compare.hpp"
 
 #include <catch2/catch.hpp>
@@ -86,6 +92,32 @@ GrowthParams touch_params(GrowthMode mode, int steps) {
     params.collisions = Collisions::touch;
     return params;
 }
+
+// The exact rule of §5.7 by brute force over every pair of faces (no grid,
+// no certificates): whether the mesh self-intersects.
+bool self_intersects_brute_force(const TriMesh& mesh) {
+    const std::vector<Vec3>& x = mesh.positions();
+    const std::vector<Face>& faces = mesh.faces();
+    for (std::size_t f = 0; f < faces.size(); ++f) {
+        if (triangle_degenerate(x[faces[f][0]], x[faces[f][1]], x[faces[f][2]])) return true;
+        const IndexedTriangle a = IndexedTriangle::of(x, faces[f]);
+        for (std::size_t g = f + 1; g < faces.size(); ++g)
+            if (faces_intersect(a, IndexedTriangle::of(x, faces[g]))) return true;
+    }
+    return false;
+}
+
+bool same_state(const GrowthState& a, const GrowthState& b) {
+    return a.steps_done == b.steps_done && a.mesh.faces() == b.mesh.faces() &&
+           a.mesh.positions() == b.mesh.positions() && a.directions == b.directions && a.outputs == b.outputs &&
+           a.active == b.active && a.touched == b.touched;
+}
+
+// Genome 73 of random_test_genome, branching mode, default settings: its
+// 200-step mesh self-intersects (hand-picked with
+// experiments/scripts/touch-rewind/rewind_rate.cpp; its step 176 is the
+// first that does).
+constexpr std::uint64_t kRewoundGenome = 73;
 
 }  // namespace
 
@@ -310,5 +342,110 @@ TEST_CASE("touch: a grown mesh depends on the genome and the parameters alone", 
             CHECK(same(alone, threaded[0]));
             CHECK(same(alone, threaded[1]));
         }
+    }
+}
+
+TEST_CASE("the whole-mesh check agrees with brute force over every pair", "[contact][fail-safe]") {
+    // Meshes grown with "allow" (many self-intersect) and "touch" in both
+    // modes, at a few lengths.
+    int intersecting = 0, clean = 0;
+    SelfIntersectionCheck check;
+    for (const Collisions collisions : {Collisions::allow, Collisions::touch})
+        for (const GrowthMode mode : {GrowthMode::paper, GrowthMode::branching})
+            for (std::uint64_t g = 1; g <= 6; ++g) {
+                GrowthParams params = touch_params(mode, 30 + 10 * static_cast<int>(g));
+                params.collisions = collisions;
+                params.max_vertices = 600;
+                const Network network(random_test_genome({45, 30, 15}, g));
+                GrowthWorkspace workspace;
+                const TriMesh mesh = Grower(network, params).grow(make_seed("icosahedron", 1.0), workspace).mesh;
+                const bool expected = self_intersects_brute_force(mesh);
+                INFO("genome " << g);
+                CHECK(check.intersects(mesh) == expected);
+                ++(expected ? intersecting : clean);
+            }
+    // Both answers were exercised.
+    CHECK(intersecting > 0);
+    CHECK(clean > 0);
+}
+
+TEST_CASE("touch's fail-safe: a self-intersecting growth goes back to its last clean step", "[contact][fail-safe]") {
+    const GrowthParams params = touch_params(GrowthMode::branching, 200);
+    const Network network(random_test_genome({45, 30, 15}, kRewoundGenome));
+    const Seed seed = make_seed("icosahedron", 1.0);
+    GrowthWorkspace workspace;
+    // Without the fail-safe (Grower alone) the mesh self-intersects.
+    REQUIRE(self_intersects_brute_force(Grower(network, params).grow(seed, workspace).mesh));
+
+    const GrowthState rewound = GenomeGrower(NetworkParams{}, params).grow(network, workspace);
+    const int k = rewound.steps_done;
+    INFO("k = " << k);
+    REQUIRE(k < params.steps);
+    // Exactly the state growing the genome for k steps gives, clean by the
+    // exact rule; step k + 1 is the first that self-intersects.
+    GrowthParams shorter = params;
+    shorter.steps = k;
+    GrowthWorkspace fresh;
+    CHECK(same_state(rewound, Grower(network, shorter).grow(seed, fresh)));
+    CHECK_FALSE(self_intersects_brute_force(rewound.mesh));
+    shorter.steps = k + 1;
+    CHECK(self_intersects_brute_force(Grower(network, shorter).grow(seed, fresh).mesh));
+    SelfIntersectionCheck check;
+    for (int steps = 0; steps <= k; steps += 1 + k / 8) {
+        shorter.steps = steps;
+        INFO("after " << steps << " steps");
+        CHECK_FALSE(check.intersects(Grower(network, shorter).grow(seed, fresh).mesh));
+    }
+}
+
+TEST_CASE("touch's fail-safe: observers see exactly the steps of the growth returned", "[contact][fail-safe]") {
+    const GrowthParams params = touch_params(GrowthMode::branching, 200);
+    const GenomeGrower grower(NetworkParams{}, params);
+    GrowthWorkspace workspace;
+    for (const std::uint64_t g : {kRewoundGenome, std::uint64_t{1}}) {  // rewound, and clean
+        const Network network(random_test_genome(grower.layers(), g));
+        const GrowthState unobserved = grower.grow(network, workspace);
+        std::vector<int> seen;
+        std::vector<int> steps_done;
+        PhaseRecorder phases;
+        const GrowthState observed = grower.grow(
+            network, workspace,
+            [&](const GrowthState& state, int t) {
+                seen.push_back(t);
+                steps_done.push_back(state.steps_done);
+            },
+            &phases);
+        INFO("genome " << g << ", k = " << unobserved.steps_done);
+        CHECK(same_state(observed, unobserved));
+        const int k = unobserved.steps_done;
+        CHECK((g == kRewoundGenome ? k < params.steps : k == params.steps));
+        REQUIRE(seen.size() == static_cast<std::size_t>(k));
+        for (int t = 0; t < k; ++t) {
+            CHECK(seen[t] == t);
+            CHECK(steps_done[t] == t + 1);
+        }
+        // Beside a step observer, phases see the steps returned and no more.
+        CHECK(phases.count(PhaseRecorder::Hook::begin, GrowthPhase::think) == k);
+        CHECK(phases.count(PhaseRecorder::Hook::begin, GrowthPhase::settle) == k);
+        // Alone (bench's clock), they see the work done: one growth of every
+        // step, then the check (and the search for k) as one more settle.
+        PhaseRecorder clock;
+        CHECK(same_state(grower.grow(network, workspace, {}, &clock), unobserved));
+        CHECK(clock.count(PhaseRecorder::Hook::begin, GrowthPhase::think) == params.steps);
+        CHECK(clock.count(PhaseRecorder::Hook::begin, GrowthPhase::settle) == params.steps + 1);
+        CHECK(clock.count(PhaseRecorder::Hook::end, GrowthPhase::settle) == params.steps + 1);
+    }
+}
+
+TEST_CASE("touch's fail-safe leaves \"allow\" and \"prevent\" alone", "[contact][fail-safe]") {
+    // The same genome grown through GenomeGrower and through Grower alone:
+    // the same state, however it self-intersects.
+    for (const Collisions collisions : {Collisions::allow, Collisions::prevent}) {
+        GrowthParams params = touch_params(GrowthMode::branching, 60);
+        params.collisions = collisions;
+        const Network network(random_test_genome({45, 30, 15}, kRewoundGenome));
+        GrowthWorkspace a, b;
+        CHECK(same_state(GenomeGrower(NetworkParams{}, params).grow(network, a),
+                         Grower(network, params).grow(make_seed("icosahedron", 1.0), b)));
     }
 }
