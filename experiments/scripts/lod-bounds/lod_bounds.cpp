@@ -22,6 +22,7 @@
 #include "engine/cgal_lod_distance_cost.hpp"
 
 #include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_simplification/Policies/Edge_collapse/Bounded_distance_placement.h>
@@ -362,7 +363,10 @@ static void sweep(const std::string& name, MeshView grown) {
     for (const Vec3& p : lod0.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
     const double diag = (hi - lo).norm();
     const std::size_t n = lod0.faces.size();
-    std::printf("%s: %zu triangles, diagonal %.3f\n", name.c_str(), n, diag);
+    std::vector<std::pair<Surface::Face_index, Surface::Face_index>> crossing;
+    const Surface placed_surface = to_surface(lod0);
+    PMP::self_intersections(placed_surface, std::back_inserter(crossing));
+    std::printf("%s: %zu triangles, diagonal %.3f, %zu pairs of triangles intersecting\n", name.c_str(), n, diag, crossing.size());
     const double fractions[] = {0.5, 0.55, 0.6, 0.65, 0.7, 0.75, 0.8, 0.25, 0.3025};
     const char* only = std::getenv("METHODS");
     for (const SweepMethod& m : kSweep) {
