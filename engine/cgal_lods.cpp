@@ -83,7 +83,6 @@ std::vector<Point> surface_samples(MeshView mesh) {
     const auto point = [](const Vec3& p) { return Point(p.x(), p.y(), p.z()); };
     for (const Vec3& p : mesh.positions) points.push_back(point(p));
     std::vector<double> areas;
-    double total = 0;
     for (const Face& f : mesh.faces) {
         const Vec3 &p = mesh.positions[f[0]], &q = mesh.positions[f[1]], &r = mesh.positions[f[2]];
         points.push_back(point((p + q + r) / 3));
@@ -91,29 +90,13 @@ std::vector<Point> surface_samples(MeshView mesh) {
         points.push_back(point((q + r) / 2));
         points.push_back(point((r + p) / 2));
         areas.push_back((q - p).cross(r - p).norm() / 2);
-        total += areas.back();
     }
-    const double wanted = static_cast<double>(std::max<std::size_t>(2000, 4 * mesh.faces.size()));
-    std::uint64_t state = 0x9E3779B97F4A7C15ULL;
-    const auto uniform = [&state] {  // splitmix64
-        std::uint64_t z = (state += 0x9E3779B97F4A7C15ULL);
-        z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ULL;
-        z = (z ^ (z >> 27)) * 0x94D049BB133111EBULL;
-        return static_cast<double>((z ^ (z >> 31)) >> 11) * 0x1.0p-53;
-    };
-    double done = 0;
-    std::size_t placed = 0;
-    for (std::size_t i = 0; i < mesh.faces.size() && total > 0; ++i) {
-        done += areas[i];
-        const auto upto = static_cast<std::size_t>(std::llround(wanted * done / total));
-        const Face& f = mesh.faces[i];
-        const Vec3 &p = mesh.positions[f[0]], &q = mesh.positions[f[1]], &r = mesh.positions[f[2]];
-        for (; placed < upto; ++placed) {
-            double u = uniform(), v = uniform();
-            if (u + v > 1) u = 1 - u, v = 1 - v;
-            points.push_back(point(p + u * (q - p) + v * (r - p)));
-        }
-    }
+    lods::spread_by_area(areas, static_cast<double>(std::max<std::size_t>(2000, 4 * mesh.faces.size())),
+                         [&](std::size_t i, double u, double v) {
+                             const Face& f = mesh.faces[i];
+                             const Vec3 &p = mesh.positions[f[0]], &q = mesh.positions[f[1]], &r = mesh.positions[f[2]];
+                             points.push_back(point(p + u * (q - p) + v * (r - p)));
+                         });
     return points;
 }
 

@@ -169,8 +169,9 @@ TEST_CASE("levels of detail of 100 random genomes keep the bounds on every level
 // Named plants whose chain stops short (experiments/2026-11-27-lod-bounds.md):
 // default genome 1 (40 triangles: halving LOD1's 20 to 10 leaves a hull
 // 12 % away) and tree genome 19 (1,996 triangles of thin branches: LOD1 no
-// nearer than 4.2 % by any try). The stop is recorded in the GLB's
-// extras and in the pack's manifest; every level written keeps its bound.
+// nearer than 2.9 % by any try; its tubes pass through one another). The
+// stop is recorded in the GLB's extras and in the pack's manifest; every
+// level written keeps its bound.
 TEST_CASE("a chain that cannot keep its bound stops, and the GLB and the manifest say so", "[engine][lods]") {
     struct Named {
         const char* what;
