@@ -30,6 +30,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <span>
 #include <vector>
 
 namespace morphogen::lods {
@@ -73,9 +74,11 @@ public:
 
     // `original` is LOD0 and must outlive this cost; `tie_weight` scales
     // the base cost (a squared distance) added to order zero-distance
-    // collapses.
-    DistanceCost(const Surface& original, BaseCost base, double tie_weight)
-        : base_(std::move(base)), tie_weight_(tie_weight),
+    // collapses. `dense`: track LOD0's measured points and four points of
+    // each new triangle (thin tubes merged into a neighbour), not only LOD0's
+    // vertices and each new triangle's centroid.
+    DistanceCost(const Surface& original, BaseCost base, double tie_weight, bool dense)
+        : base_(std::move(base)), tie_weight_(tie_weight), dense_(dense),
           tree_(std::make_shared<Tree>(faces(original).first, faces(original).second, original)),
           merged_(std::make_shared<std::vector<std::vector<Point>>>()) {
         tree_->accelerate_distance_queries();
@@ -86,6 +89,7 @@ public:
         base_.initialize(mesh, vpm, traits);
         merged_->assign(num_vertices(mesh), {});
         for (auto v : vertices(mesh)) (*merged_)[v.idx()].push_back(get(vpm, v));
+        if (!dense_) return;
         // LOD0's points that hausdorff_distance measures (edge midpoints,
         // centroids and points spread by area), each kept with the nearest
         // corner of its triangle: a thin tube merged into a neighbour can keep
@@ -154,8 +158,11 @@ public:
             level_to_grown = std::max(level_to_grown, tree_->squared_distance(Point((a.x() + q.x()) / 2, (a.y() + q.y()) / 2, (a.z() + q.z()) / 2)));
             // The centroid and three points between it and the corners (a new
             // triangle can leave LOD0 inside while its corners stay on it).
-            for (const auto& [wa, wq, wc] : {std::array{1.0 / 3, 1.0 / 3, 1.0 / 3}, std::array{2.0 / 3, 1.0 / 6, 1.0 / 6},
-                                            std::array{1.0 / 6, 2.0 / 3, 1.0 / 6}, std::array{1.0 / 6, 1.0 / 6, 2.0 / 3}})
+            constexpr std::array<std::array<double, 3>, 4> kWeights{{{1.0 / 3, 1.0 / 3, 1.0 / 3},
+                                                                    {2.0 / 3, 1.0 / 6, 1.0 / 6},
+                                                                    {1.0 / 6, 2.0 / 3, 1.0 / 6},
+                                                                    {1.0 / 6, 1.0 / 6, 2.0 / 3}}};
+            for (const auto& [wa, wq, wc] : std::span(kWeights).first(dense_ ? 4 : 1))
                 level_to_grown = std::max(level_to_grown, tree_->squared_distance(Point(wa * a.x() + wq * q.x() + wc * c.x(),
                                                                                         wa * a.y() + wq * q.y() + wc * c.y(),
                                                                                         wa * a.z() + wq * q.z() + wc * c.z())));
@@ -194,6 +201,7 @@ public:
 private:
     BaseCost base_;
     double tie_weight_;
+    bool dense_;
     std::shared_ptr<Tree> tree_;  // CGAL copies its policies: they share these
     std::shared_ptr<std::vector<std::vector<Point>>> merged_;  // grown vertices merged into each vertex
 };

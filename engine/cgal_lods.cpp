@@ -100,7 +100,11 @@ std::vector<Point> surface_samples(MeshView mesh) {
     return points;
 }
 
-enum class Cost { quadric, distance };
+// The distance cost comes sparse (LOD0's vertices, each new triangle's
+// centroid) and dense (also LOD0's measured points and four points of each
+// new triangle): dense keeps thin branches that sparse merges into a
+// neighbour, at several times its time.
+enum class Cost { quadric, distance, dense_distance };
 
 // `original` collapsed to about `faces` triangles. A closed triangle mesh has
 // 3/2 edges per face and a collapse removes 3 edges (2 faces); CGAL stops
@@ -114,7 +118,8 @@ MeshArrays collapse_to(const Surface& original, double diag, std::size_t faces, 
     if (kind == Cost::quadric) {
         SMS::edge_collapse(surface, stop, CGAL::parameters::get_cost(policies.get_cost()).get_placement(placement));
     } else {
-        const lods::DistanceCost<Surface, Kernel, Policies::Get_cost> cost(original, policies.get_cost(), 1e-3 / diag);
+        const lods::DistanceCost<Surface, Kernel, Policies::Get_cost> cost(original, policies.get_cost(), 1e-3 / diag,
+                                                                            kind == Cost::dense_distance);
         SMS::edge_collapse(surface, stop, CGAL::parameters::get_cost(cost).get_placement(placement));
     }
     return to_arrays(surface);
@@ -127,8 +132,9 @@ struct Try {
     Cost cost;
     double ratio;
 };
-constexpr Try kTries[] = {{Cost::quadric, kLodHalf}, {Cost::quadric, kLodMaxRatio},
-                          {Cost::distance, kLodHalf}, {Cost::distance, kLodMaxRatio}};
+constexpr Try kTries[] = {{Cost::quadric, kLodHalf},        {Cost::quadric, kLodMaxRatio},
+                          {Cost::distance, kLodHalf},       {Cost::distance, kLodMaxRatio},
+                          {Cost::dense_distance, kLodHalf}, {Cost::dense_distance, kLodMaxRatio}};
 
 }  // namespace
 

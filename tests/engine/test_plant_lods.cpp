@@ -12,6 +12,7 @@
 #include "growth/genome_grower.hpp"
 #include "growth/growth_params.hpp"
 #include "tests/engine/glb_reader.hpp"
+#include "tests/support/sanitizers.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tests/support/test_genomes.hpp"
 
@@ -20,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <ostream>
+#include <span>
 #include <nlohmann/json.hpp>
 
 using namespace morphogen;
@@ -171,7 +173,8 @@ TEST_CASE("levels of detail of 100 random genomes keep the bounds on every level
 // 12 % away) and tree genome 19 (1,996 triangles of thin branches: LOD1 no
 // nearer than 2.9 % by any try; its tubes pass through one another). The
 // stop is recorded in the GLB's extras and in the pack's manifest; every
-// level written keeps its bound.
+// level written keeps its bound. Under the sanitizers only genome 1: tree 19's
+// four refused tries take minutes instrumented, on the same paths.
 TEST_CASE("a chain that cannot keep its bound stops, and the GLB and the manifest say so", "[engine][lods]") {
     struct Named {
         const char* what;
@@ -180,7 +183,8 @@ TEST_CASE("a chain that cannot keep its bound stops, and the GLB and the manifes
     };
     const Named plants[] = {{"default genome 1", GenomeGrower(NetworkParams{}, GrowthParams{}), 1},
                             {"tree genome 19", tree_grower(), 19}};
-    for (const Named& named : plants) {
+    const int count = testing::whole_or_under_sanitizers(2, 1);
+    for (const Named& named : std::span(plants, static_cast<std::size_t>(count))) {
         INFO(named.what);
         BirthSteps births(named.grower.seed().mesh.num_vertices());
         GrowthWorkspace workspace;

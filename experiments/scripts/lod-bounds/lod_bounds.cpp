@@ -255,7 +255,8 @@ static MeshArrays sweep_collapse(MeshView lod0, std::size_t faces, const SweepMe
     Surface s = original;
     using Policies = SMS::GarlandHeckbert_triangle_policies<Surface, Kernel>;
     Policies policies(s);
-    const morphogen::lods::DistanceCost<Surface, Kernel, Policies::Get_cost> distance_cost(original, policies.get_cost(), 1e-3 / diag);
+    const morphogen::lods::DistanceCost<Surface, Kernel, Policies::Get_cost> distance_cost(original, policies.get_cost(), 1e-3 / diag,
+                                                                                                      /*dense=*/true);
     const SMS::LindstromTurk_placement<Surface> lt_place;
     const SMS::LindstromTurk_cost<Surface> lt_cost;
     SMS::GarlandHeckbert_probabilistic_triangle_policies<Surface, Kernel> probabilistic(s);
