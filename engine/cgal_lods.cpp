@@ -132,6 +132,13 @@ struct Try {
     Cost cost;
     double ratio;
 };
+// The dense cost only for LOD0s of at least this many triangles: below it
+// the measured points are their floor of 2,000 (4 or more a triangle, see
+// surface_samples), and tracking them made small plants' refused tries 3-10
+// times slower (a report's plants, a test suite's runs) for levels the
+// sparse cost already gives them. The plants it is for, trees of thin
+// branches, are near the 1,000-vertex cap (1,996 triangles).
+constexpr std::size_t kMinDenseFaces = 500;
 constexpr Try kTries[] = {{Cost::quadric, kLodHalf},        {Cost::quadric, kLodMaxRatio},
                           {Cost::distance, kLodHalf},       {Cost::distance, kLodMaxRatio},
                           {Cost::dense_distance, kLodHalf}, {Cost::dense_distance, kLodMaxRatio}};
@@ -156,6 +163,7 @@ PlantLods simplify_lods(MeshView lod0, int count) {
         for (const Try& attempt : kTries) {
             const auto target = static_cast<std::size_t>(std::floor(attempt.ratio * static_cast<double>(before)));
             if (target < kMinLodFaces) break;
+            if (attempt.cost == Cost::dense_distance && lod0.faces.size() < kMinDenseFaces) break;
             MeshArrays level = collapse_to(original, diag, target, attempt.cost);
             if (level.faces.size() > target) continue;  // CGAL found no more collapses it may make
             const double distance = hausdorff_distance(lod0, level.view()) / diag;
