@@ -19,17 +19,8 @@ bool SelfIntersectionCheck::intersects(const TriMesh& mesh) {
             return true;
 
     boxes_.resize(static_cast<std::size_t>(F));
-    double extent_sum = 0.0, extent_max = 0.0;
-    for (int f = 0; f < F; ++f) {
-        boxes_[f] = Box3::of(x[faces[f][0]], x[faces[f][1]], x[faces[f][2]]);
-        const double extent = (boxes_[f].hi - boxes_[f].lo).maxCoeff();
-        extent_sum += extent;
-        extent_max = std::max(extent_max, extent);
-    }
-    // Cells about as large as a face's box (as mesh/face_listing's grid).
-    double cell = std::max(extent_sum / std::max(F, 1), extent_max / 16.0);
-    if (!(cell > 0.0)) cell = 1.0;
-    grid_.build(cell, boxes_);
+    for (int f = 0; f < F; ++f) boxes_[f] = Box3::of(x[faces[f][0]], x[faces[f][1]], x[faces[f][2]]);
+    grid_.build(SpatialHash::cell_size_for(boxes_), boxes_);
 
     seen_.assign(static_cast<std::size_t>(F), 0);
     for (int f = 0; f < F; ++f) {

@@ -29,17 +29,8 @@ void FaceListing::relist(int f, const Box3& box) {
 }
 
 void FaceListing::rebuild_grid() {
-    // Cells about as large as a listing box, as in the grid of one step; no
-    // box spans more than 17 cells a side.
-    double extent_sum = 0.0, extent_max = 0.0;
-    for (const Box3& box : boxes_) {
-        const double extent = (box.hi - box.lo).maxCoeff();
-        extent_sum += extent;
-        extent_max = std::max(extent_max, extent);
-    }
-    double cell = std::max(extent_sum / std::max<std::size_t>(boxes_.size(), 1), extent_max / 16.0);
-    if (!(cell > 0.0)) cell = 1.0;
-    grid_.build(cell, boxes_);
+    // Cells about as large as a listing box, as in the grid of one step.
+    grid_.build(SpatialHash::cell_size_for(boxes_), boxes_);
     grid_built_ = true;
 }
 

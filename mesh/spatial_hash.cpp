@@ -5,6 +5,17 @@
 
 namespace morphogen {
 
+double SpatialHash::cell_size_for(const std::vector<Box3>& boxes) {
+    double extent_sum = 0.0, extent_max = 0.0;
+    for (const Box3& box : boxes) {
+        const double extent = (box.hi - box.lo).maxCoeff();
+        extent_sum += extent;
+        extent_max = std::max(extent_max, extent);
+    }
+    const double cell = std::max(extent_sum / static_cast<double>(std::max<std::size_t>(boxes.size(), 1)), extent_max / 16.0);
+    return cell > 0.0 ? cell : 1.0;
+}
+
 void SpatialHash::build(double cell_size, const std::vector<Box3>& boxes) {
     inverse_cell_ = 1.0 / cell_size;
     // Twice as many buckets as entries: few cells share a bucket, so a query

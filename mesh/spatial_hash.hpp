@@ -38,6 +38,9 @@ struct Box3 {
 
 class SpatialHash {
 public:
+    // A cell edge about as large as the mean box, so no box spans more than
+    // 17 cells a side (1 where every box is a point).
+    static double cell_size_for(const std::vector<Box3>& boxes);
     // Lists boxes[i] as id i, and nothing else; cells of edge `cell_size`
     // (> 0, finite).
     void build(double cell_size, const std::vector<Box3>& boxes);
