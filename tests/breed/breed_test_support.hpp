@@ -3,6 +3,8 @@
 // byte comparisons of session directories.
 #include "run/experiment_config.hpp"
 
+#include <nlohmann/json.hpp>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -28,5 +30,12 @@ std::vector<std::string> session_files(const std::filesystem::path& dir);
 // "" when both directories hold the same files with the same bytes; else
 // the first difference.
 std::string session_difference(const std::filesystem::path& a, const std::filesystem::path& b);
+
+// The ids of a session state's grid, in order.
+inline std::vector<std::string> grid_ids(const nlohmann::json& state) {
+    std::vector<std::string> ids;
+    for (const nlohmann::json& p : state.at("grid")) ids.push_back(p.at("id"));
+    return ids;
+}
 
 }  // namespace morphogen::testing

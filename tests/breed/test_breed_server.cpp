@@ -43,12 +43,6 @@ struct Api {
     }
 };
 
-std::vector<std::string> grid_ids(const json& state) {
-    std::vector<std::string> ids;
-    for (const json& p : state.at("grid")) ids.push_back(p.at("id"));
-    return ids;
-}
-
 // The status of a reply, after checking that an error has its JSON body.
 int status(const httplib::Result& r) {
     REQUIRE(r);

@@ -21,12 +21,6 @@ using nlohmann::json;
 
 namespace {
 
-std::vector<std::string> grid_ids(const json& state) {
-    std::vector<std::string> ids;
-    for (const json& p : state.at("grid")) ids.push_back(p.at("id"));
-    return ids;
-}
-
 int status_of(const std::function<void()>& f) {
     try {
         f();

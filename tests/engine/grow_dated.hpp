@@ -2,6 +2,7 @@
 // A random genome grown with the step each vertex was born at (the wind
 // data's flutter channel reads it): the engine tests' shared plant.
 #include "engine/birth_steps.hpp"
+#include "engine/plant_export.hpp"
 #include "growth/genome_grower.hpp"
 #include "tests/support/test_genomes.hpp"
 
@@ -14,6 +15,8 @@ namespace morphogen::testing {
 struct Grown {
     GrowthState state;
     std::vector<int> births;
+    // What the exporters take; it views this plant's mesh.
+    GrownPlant plant() const { return {.mesh = state.mesh.view(), .birth_steps = births, .steps = state.steps_done}; }
 };
 
 // random_test_genome(seed) grown for `steps` steps at the default settings.

@@ -8,6 +8,7 @@
 #include "growth/genome_grower.hpp"
 #include "growth/network.hpp"
 #include "tests/engine/glb_reader.hpp"
+#include "tests/engine/grow_dated.hpp"
 #include "tests/support/temp_dir.hpp"
 #include "tests/support/test_genomes.hpp"
 
@@ -21,22 +22,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
-struct Grown {
-    GrowthState state;
-    std::vector<int> births;
-    GrownPlant plant() const { return {.mesh = state.mesh.view(), .birth_steps = births, .steps = state.steps_done}; }
-};
+using testing::Grown;
 
-Grown grow(std::uint64_t seed) {
-    GrowthParams growth;
-    growth.steps = 40;
-    const GenomeGrower grower(NetworkParams{}, growth);
-    BirthSteps births(grower.seed().mesh.num_vertices());
-    GrowthWorkspace workspace;
-    const Network network(testing::random_test_genome(grower.layers(), seed));
-    GrowthState state = grower.grow(network, workspace, births.observer());
-    return {std::move(state), births.steps()};
-}
+// A random genome grown 40 steps, with its vertices' birth steps.
+Grown grow(std::uint64_t seed) { return testing::grow_dated(seed, 40); }
 
 PlantRecord record_of(std::uint64_t id, std::optional<std::uint64_t> cell) {
     PlantRecord record;

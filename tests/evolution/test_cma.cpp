@@ -13,6 +13,7 @@
 #include "evolution/pipeline.hpp"
 #include "evolution/sep_cma.hpp"
 #include "evolution/thread_evaluator.hpp"
+#include "tests/evolution/search_fixtures.hpp"
 #include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
@@ -23,6 +24,7 @@
 #include <optional>
 
 using namespace morphogen;
+using namespace morphogen::test;
 using morphogen::test::DescribedSphereProblem;
 
 namespace {
@@ -51,14 +53,8 @@ EmitterSpec cma(CmaRanking ranking, double share = 1.0, CmaCovariance covariance
     return {share, std::make_shared<CmaEmitter>(ParentSelection::uniform, cma_settings(ranking, covariance))};
 }
 
-EmitterSpec gaussian() { return {1.0, std::make_shared<GaussianEmitter>()}; }
-
 const CmaEmitter& cma_of(const EmitterSlot& slot) { return dynamic_cast<const CmaEmitter&>(*slot); }
 
-MapElitesState empty_state() { return MapElitesState{0, Archive::grid({{"x", -2, 3, 8}, {"y", -2, 3, 8}}), {}, 0, 0}; }
-
-const auto ignore = [](const Individual&, const std::string&, const Inserted&, const std::string&) {};
-const auto never = [] { return false; };
 
 MapElitesParams params_with(std::vector<EmitterSpec> emitters) {
     MapElitesParams p;

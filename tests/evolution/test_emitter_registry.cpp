@@ -11,24 +11,24 @@ using namespace morphogen;
 using nlohmann::json;
 
 namespace {
-struct Read {
+struct ReadSpecs {
     std::vector<EmitterSpec> specs;
     json resolved;
     ConfigIssues issues;
 };
 
-Read read(const std::string& text) {
-    Read r;
+ReadSpecs read_specs(const std::string& text) {
+    ReadSpecs r;
     r.specs = read_emitters(json::parse(text), r.issues, r.resolved);
     return r;
 }
 
-std::string issues_of(const Read& r) { return r.issues.format("config"); }
+std::string issues_of(const ReadSpecs& r) { return r.issues.format("config"); }
 }  // namespace
 
 TEST_CASE("every emitter kind reads its keys and resolves every default", "[evolution][emitters][registry]") {
     CHECK(emitter_kind_names() == std::vector<std::string>{"gaussian", "iso_line", "cma_me", "cma_mae"});
-    const Read r = read(R"([{}, {"kind": "iso_line", "sigma_line": 0.5, "share": 3}, {"kind": "cma_me"},
+    const ReadSpecs r = read_specs(R"([{}, {"kind": "iso_line", "sigma_line": 0.5, "share": 3}, {"kind": "cma_me"},
                             {"kind": "cma_mae", "selection": "fitness_proportional", "learning_rate": 0.1}])");
     INFO(issues_of(r));
     REQUIRE(r.issues.empty());
@@ -64,7 +64,7 @@ TEST_CASE("every emitter kind reads its keys and resolves every default", "[evol
 TEST_CASE("the emitter registry refuses keys of other kinds, bad values and threshold clashes",
           "[evolution][emitters][registry]") {
     auto refused = [](const std::string& text, const std::string& expected) {
-        const Read r = read(text);
+        const ReadSpecs r = read_specs(text);
         INFO(text);
         CHECK_THAT(issues_of(r), Catch::Contains(expected));
     };

@@ -9,6 +9,7 @@
 #include "evolution/pipeline.hpp"
 #include "evolution/thread_evaluator.hpp"
 #include "tests/evolution/breeding.hpp"
+#include "tests/evolution/search_fixtures.hpp"
 #include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
@@ -19,6 +20,7 @@
 #include <random>
 
 using namespace morphogen;
+using namespace morphogen::test;
 using morphogen::test::DescribedSphereProblem;
 
 namespace {
@@ -27,7 +29,6 @@ EmitterSpec iso_line(double share, double sigma_iso, double sigma_line,
     return {share, std::make_shared<IsoLineEmitter>(selection, IsoLineSettings{sigma_iso, sigma_line})};
 }
 
-EmitterSpec gaussian(double share = 1.0) { return {share, std::make_shared<GaussianEmitter>()}; }
 
 // Birth `birth` of `spec`'s emitter from `pool` (population 10, dimension 4, seed `seed`).
 Individual emit(const EmitterSpec& spec, std::span<const Block> blocks, std::uint64_t seed, std::uint64_t birth,
@@ -44,10 +45,6 @@ Individual elite(std::uint64_t id, std::vector<double> params, double fitness) {
     return e;
 }
 
-MapElitesState empty_state() { return MapElitesState{0, Archive::grid({{"x", -2, 3, 8}, {"y", -2, 3, 8}}), {}, 0, 0}; }
-
-const auto ignore = [](const Individual&, const std::string&, const Inserted&, const std::string&) {};
-const auto never = [] { return false; };
 
 std::string run(Problem& problem, const MapElitesParams& params, GenomeEvaluator& evaluator, std::uint64_t births,
                 const BirthSchedule& schedule) {

@@ -10,15 +10,15 @@ using namespace morphogen;
 using nlohmann::json;
 
 namespace {
-struct Read {
+struct ReadParams {
     GaParams params;
     Algorithm algorithm = Algorithm::steady_state;
     json resolved;
     ConfigIssues issues;
 };
 
-Read read(const json& section) {
-    Read out;
+ReadParams read_params(const json& section) {
+    ReadParams out;
     out.algorithm = Algorithm::map_elites;  // so a default read is seen to set it
     ObjectReader reader(&section, "evolution", out.issues);
     out.params = read_evolution_params(reader, &out.algorithm);
@@ -30,7 +30,7 @@ std::string messages(const ConfigIssues& issues) { return issues.format("test");
 }  // namespace
 
 TEST_CASE("evolution: an empty section gives the documented defaults, every one resolved", "[evolution][config]") {
-    const Read r = read(json::object());
+    const ReadParams r = read_params(json::object());
     CHECK(r.issues.empty());
     CHECK(r.algorithm == Algorithm::steady_state);
     const GaParams defaults;
@@ -42,7 +42,7 @@ TEST_CASE("evolution: an empty section gives the documented defaults, every one 
 }
 
 TEST_CASE("evolution: the values given are used and recorded", "[evolution][config]") {
-    const Read r = read(json::parse(R"({"algorithm": "map_elites", "population": 7, "tournament": 2,
+    const ReadParams r = read_params(json::parse(R"({"algorithm": "map_elites", "population": 7, "tournament": 2,
         "crossover": 0.5, "mutation_rate": 0.1, "mutation_sigma": 0.2, "lag": 3, "init_range": 1.5})"));
     CHECK(r.issues.empty());
     CHECK(r.algorithm == Algorithm::map_elites);
@@ -64,7 +64,7 @@ TEST_CASE("evolution: the values given are used and recorded", "[evolution][conf
 
 TEST_CASE("evolution: a section that sets batch keeps the batch schedule; only the schedule's size is resolved",
           "[evolution][config]") {
-    const Read batch = read(json{{"batch", 8}});
+    const ReadParams batch = read_params(json{{"batch", 8}});
     CHECK(batch.issues.empty());
     CHECK(batch.params.schedule == ScheduleKind::batch);
     CHECK(batch.params.batch == 8);
@@ -74,21 +74,21 @@ TEST_CASE("evolution: a section that sets batch keeps the batch schedule; only t
     CHECK(birth_schedule(batch.params).width == 8);
 
     // Reading the resolved section again gives it back.
-    CHECK(read(batch.resolved).resolved == batch.resolved);
+    CHECK(read_params(batch.resolved).resolved == batch.resolved);
 
-    const Read named = read(json{{"schedule", "batch"}});
+    const ReadParams named = read_params(json{{"schedule", "batch"}});
     CHECK(named.params.batch == GaParams{}.batch);
     CHECK_FALSE(named.resolved.contains("lag"));
 }
 
 TEST_CASE("evolution: every problem with its key path", "[evolution][config]") {
-    const Read r = read(json::parse(R"({"population": 1, "tournamnet": 3, "algorithm": "map_elite",
+    const ReadParams r = read_params(json::parse(R"({"population": 1, "tournamnet": 3, "algorithm": "map_elite",
         "schedule": "pipeline", "batch": 4})"));
     const std::string text = messages(r.issues);
     CHECK_THAT(text, Catch::Contains("evolution.population"));
     CHECK_THAT(text, Catch::Contains("evolution.tournamnet") && Catch::Contains("did you mean \"tournament\""));
     CHECK_THAT(text, Catch::Contains("evolution.algorithm") && Catch::Contains("did you mean \"map_elites\""));
     CHECK_THAT(text, Catch::Contains("evolution.batch: applies to schedule \"batch\" only"));
-    CHECK_THAT(messages(read(json{{"batch", 4}, {"lag", 2}}).issues),
+    CHECK_THAT(messages(read_params(json{{"batch", 4}, {"lag", 2}}).issues),
                Catch::Contains("evolution.lag: applies to schedule \"pipeline\" only"));
 }

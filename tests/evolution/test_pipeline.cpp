@@ -10,6 +10,7 @@
 #include "evolution/batch.hpp"
 #include "evolution/gaussian_emitter.hpp"
 #include "tests/evolution/breeding.hpp"
+#include "tests/evolution/search_fixtures.hpp"
 #include "tests/evolution/toy_problems.hpp"
 
 #include <catch2/catch.hpp>
@@ -20,6 +21,7 @@
 #include <random>
 
 using namespace morphogen;
+using namespace morphogen::test;
 using morphogen::test::DescribedSphereProblem;
 using morphogen::test::SphereProblem;
 
@@ -74,8 +76,6 @@ MapElitesState me_state() {
     return MapElitesState{0, Archive::grid({{"x", -2, 3, 6}, {"y", -2, 3, 6}}), {}, 0, 0};
 }
 
-const auto never = [] { return false; };
-const auto ignore = [](const Individual&, const std::string&, const Inserted&, const std::string&) {};
 
 // A GA run of `births` births through the pipeline, as its state's JSON.
 std::string ga_run(Problem& problem, const GaParams& params, GenomeEvaluator& evaluator, std::uint64_t births) {

@@ -12,7 +12,7 @@ using namespace morphogen;
 using morphogen::test::SphereProblem;
 
 namespace {
-GaParams small_params() {
+GaParams small_ga_params() {
     GaParams p;
     p.population = 20;
     p.batch = 6;  // 20 = 6+6+6+2: exercises the boundary
@@ -27,7 +27,7 @@ std::vector<test::Bred> step(SteadyStateGA& ga, Problem& problem, int threads) {
 }
 
 // Runs until `births` births; returns the state as canonical JSON text.
-std::string run(Problem& problem, const GaParams& params, int threads, std::uint64_t births, GaState start = {}) {
+std::string run_ga(Problem& problem, const GaParams& params, int threads, std::uint64_t births, GaState start = {}) {
     SteadyStateGA ga(params, 42, problem, std::move(start));
     while (ga.state().births < births) step(ga, problem, threads);
     return ga_state_to_json(ga.state()).dump();
@@ -36,19 +36,19 @@ std::string run(Problem& problem, const GaParams& params, int threads, std::uint
 
 TEST_CASE("a run is the same for 1 or 2 or 8 threads", "[evolution][determinism]") {
     SphereProblem problem(12, 3, true);
-    const auto params = small_params();
-    const std::string one = run(problem, params, 1, 400);
-    CHECK(run(problem, params, 2, 400) == one);
-    CHECK(run(problem, params, 8, 400) == one);
+    const auto params = small_ga_params();
+    const std::string one = run_ga(problem, params, 1, 400);
+    CHECK(run_ga(problem, params, 2, 400) == one);
+    CHECK(run_ga(problem, params, 8, 400) == one);
     // batch size changes the result (parents come from the batch's snapshot); the seed too
     auto other = params;
     other.batch = 5;
-    CHECK(run(problem, other, 1, 400) != one);
+    CHECK(run_ga(problem, other, 1, 400) != one);
 }
 
 TEST_CASE("the GA improves a sphere function", "[evolution]") {
     SphereProblem problem(12, 3);
-    SteadyStateGA ga(small_params(), 1, problem);
+    SteadyStateGA ga(small_ga_params(), 1, problem);
     while (ga.state().births < 20) step(ga, problem, 1);
     const double initial = *summarize(ga.state().population).best;
     test::breed_until(ga, problem, 20, 6, 1, 2000);
@@ -61,7 +61,7 @@ TEST_CASE("the GA improves a sphere function", "[evolution]") {
 
 TEST_CASE("exceptions and non-finite scores make a child invalid and never fail the run", "[evolution]") {
     SphereProblem problem(6, 2, true);
-    GaParams params = small_params();
+    GaParams params = small_ga_params();
     params.init_range = 3.0;  // many genomes trip the faults
     SteadyStateGA ga(params, 5, problem);
     std::uint64_t invalid = 0, generation_invalid = 0;
@@ -88,20 +88,20 @@ TEST_CASE("exceptions and non-finite scores make a child invalid and never fail 
 
 TEST_CASE("a state saved mid-generation continues exactly", "[evolution][resume]") {
     SphereProblem problem(12, 3, true);
-    const auto params = small_params();
-    const std::string whole = run(problem, params, 2, 200);
+    const auto params = small_ga_params();
+    const std::string whole = run_ga(problem, params, 2, 200);
     for (std::uint64_t stop : {6ULL, 20ULL, 38ULL, 100ULL}) {
         SteadyStateGA first(params, 42, problem);
         while (first.state().births < stop) step(first, problem, 1);
         const auto saved = nlohmann::json::parse(ga_state_to_json(first.state()).dump());
         GaState restored = ga_state_from_json(saved, params, problem.dimension());
-        CHECK(run(problem, params, 8, 200, std::move(restored)) == whole);
+        CHECK(run_ga(problem, params, 8, 200, std::move(restored)) == whole);
     }
 }
 
 TEST_CASE("ga_state_from_json refuses states that do not fit", "[evolution][resume]") {
     SphereProblem problem(4, 2);
-    const auto params = small_params();
+    const auto params = small_ga_params();
     SteadyStateGA ga(params, 42, problem);
     while (ga.state().births < 26) step(ga, problem, 1);
     const auto good = ga_state_to_json(ga.state());

@@ -107,4 +107,25 @@ inline MeshArrays make_bumpy(unsigned seed, int levels = 3, double roughness = 0
     return m;
 }
 
+// A trunk [-0.5, 0.5]^2 x [0, 10] and three crowns 2 x 2 x 10 above it at
+// x = -6, 0, 6: trunk_ratio sqrt(2)/sqrt(200) = 0.1, upper_loops 3,
+// volume 10 + 3 * 40 = 130; under a vertical sun the crowns' tops catch 12.
+inline MeshArrays three_crowned_tree() {
+    MeshArrays tree = make_box({-0.5, -0.5, 0}, {0.5, 0.5, 10});
+    for (double x : {-6.0, 0.0, 6.0}) tree = merge(tree, make_box({x - 1, -1, 10}, {x + 1, 1, 20}));
+    return tree;
+}
+
+// The same triangles, each with its own three vertices (as an STL file, or
+// one that splits vertices by normal, holds them).
+inline MeshArrays unwelded(const MeshArrays& mesh) {
+    MeshArrays out;
+    for (const Face& f : mesh.faces) {
+        const int first = static_cast<int>(out.positions.size());
+        for (int v : f) out.positions.push_back(mesh.positions[v]);
+        out.faces.push_back({first, first + 1, first + 2});
+    }
+    return out;
+}
+
 }  // namespace morphogen::test

@@ -14,6 +14,7 @@
 
 using namespace morphogen;
 using namespace morphogen::testing;
+using morphogen::test::unwelded;
 
 namespace {
 
@@ -83,16 +84,6 @@ MeshArrays mushroom() {
         {-3, -3, -0.5}, {3, 3, 5.6}, kGrid);
 }
 
-// The same triangles, each with its own three vertices (as an STL file holds them).
-MeshArrays unwelded(const MeshArrays& mesh) {
-    MeshArrays out;
-    for (const Face& f : mesh.faces) {
-        const int first = static_cast<int>(out.positions.size());
-        for (int v : f) out.positions.push_back(mesh.positions[v]);
-        out.faces.push_back({first, first + 1, first + 2});
-    }
-    return out;
-}
 
 // The limbs' thicknesses are the arms' diameter within 20 % (a marching-
 // tetrahedra surface zigzags: its level curves are a few % longer than a

@@ -12,14 +12,6 @@ using nlohmann::json;
 
 namespace {
 
-// A trunk [-0.5, 0.5]^2 x [0, 10] and three crowns 2 x 2 x 10 above it at
-// x = -6, 0, 6: trunk_ratio sqrt(2)/sqrt(200) = 0.1, upper_loops 3,
-// volume 10 + 3 * 40 = 130; under a vertical sun the crowns' tops catch 12.
-MeshArrays three_crowned_tree() {
-    MeshArrays tree = make_box({-0.5, -0.5, 0}, {0.5, 0.5, 10});
-    for (double x : {-6.0, 0.0, 6.0}) tree = merge(tree, make_box({x - 1, -1, 10}, {x + 1, 1, 20}));
-    return tree;
-}
 
 TreeFitnessParams overhead_sun() {
     TreeFitnessParams p;

@@ -13,24 +13,6 @@ using namespace morphogen;
 using namespace morphogen::test;
 
 namespace {
-// A trunk [-0.5, 0.5]^2 x [0, 10] and three crowns 2 x 2 x 10 above it at x = -6, 0, 6.
-MeshArrays three_crowned_tree() {
-    MeshArrays tree = make_box({-0.5, -0.5, 0}, {0.5, 0.5, 10});
-    for (double x : {-6.0, 0.0, 6.0}) tree = merge(tree, make_box({x - 1, -1, 10}, {x + 1, 1, 20}));
-    return tree;
-}
-
-// The same mesh with every face's corners its own vertices (as files that
-// split vertices by normal store it).
-MeshArrays unwelded(const MeshArrays& m) {
-    MeshArrays out;
-    for (const Face& f : m.faces) {
-        const int base = static_cast<int>(out.positions.size());
-        for (int k = 0; k < 3; ++k) out.positions.push_back(m.positions[f[k]]);
-        out.faces.push_back({base, base + 1, base + 2});
-    }
-    return out;
-}
 }  // namespace
 
 TEST_CASE("tree sections: a trunk under three crowns, a box, a sphere", "[fitness][tree]") {
