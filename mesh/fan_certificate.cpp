@@ -37,18 +37,11 @@ bool certified_along(const Vec3& normal, std::span<const Vec3> spokes, std::span
     const Vec3 normal_abs = normal.cwiseAbs();
     // Every face positively oriented along N: N . (e_k x e_k+1) > 0. The
     // bound covers the rounding of the spokes (u - v), of the cross product
-    // and of the dot product (about 8 epsilon; 45 allowed). Most faces clear
-    // a cheaper, larger bound (|N|_1 2 |a|_inf |b|_inf holds N_abs .
-    // cross_abs(a, b); the 1e-6 covers rounding it): only the rest pay for
-    // the exact one, which decides as before.
-    const double quick_scale = 2e-14 * (1.0 + 1e-6) * normal_abs.sum();
+    // and of the dot product (about 8 epsilon; 45 allowed).
     for (std::size_t k = 0; k < n; ++k) {
         const Vec3& a = spokes[k];
         const Vec3& b = spokes[k + 1 == n ? 0 : k + 1];
-        const double value = normal.dot(crosses[k]);
-        const double quick_bound = quick_scale * a.cwiseAbs().maxCoeff() * b.cwiseAbs().maxCoeff();
-        if (value > quick_bound && quick_bound > 0x1p-960) continue;
-        if (certain_sign(value, 1e-14 * normal_abs.dot(cross_abs(a, b))) <= 0) return false;
+        if (certain_sign(normal.dot(crosses[k]), 1e-14 * normal_abs.dot(cross_abs(a, b))) <= 0) return false;
     }
     // Every turn from one spoke to the next is then in (0, pi); the ring winds
     // once iff, counted from a direction r inside face 0's angle, the spokes
