@@ -26,8 +26,8 @@ ContactGrid::FloatBox ContactGrid::outward(const Box3& box) {
 }
 
 template <class Fn>
-void ContactGrid::for_each_cell(const Box3& box, Fn&& fn) const {
-    const std::array<int, 3> lo = cell_of(box.lo), hi = cell_of(box.hi);
+void ContactGrid::for_each_cell(const CellRange& range, Fn&& fn) const {
+    const auto& [lo, hi] = range;
     for (int i = lo[0]; i <= hi[0]; ++i)
         for (int j = lo[1]; j <= hi[1]; ++j)
             for (int k = lo[2]; k <= hi[2]; ++k) fn((i * cells_[1] + j) * cells_[2] + k);
@@ -46,27 +46,38 @@ void ContactGrid::build(const std::vector<Box3>& boxes, double cell_size, const 
     inverse_cell_ = 1.0 / cell;
     for (int k = 0; k < 3; ++k) cells_[k] = std::max(1, static_cast<int>(std::ceil(size[k] * inverse_cell_)));
     const std::size_t count = static_cast<std::size_t>(cells_[0]) * cells_[1] * cells_[2];
-    // Counting sort by cell: count, prefix sums, fill.
+    // Counting sort by cell: count, prefix sums (each cell's end), fill
+    // backwards (each cell's end moves down to its start, and its ids stay
+    // ascending). Each box's cell range is found once and kept for the fill.
     start_.assign(count + 1, 0);
-    for (const Box3& box : boxes) for_each_cell(box, [&](int c) { ++start_[c + 1]; });
+    std::vector<CellRange>& ranges = range_scratch_;
+    ranges.resize(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        ranges[i] = {cell_of(boxes[i].lo), cell_of(boxes[i].hi)};
+        for_each_cell(ranges[i], [&](int c) { ++start_[c]; });
+    }
     for (std::size_t c = 0; c < count; ++c) start_[c + 1] += start_[c];
     ids_.resize(start_[count]);
     boxes_.resize(boxes.size());
-    std::vector<std::uint32_t>& next = fill_cursor_;
-    next.assign(start_.begin(), start_.end() - 1);
-    for (std::size_t i = 0; i < boxes.size(); ++i) {
+    for (std::size_t i = boxes.size(); i-- > 0;) {
         boxes_[i] = {outward(boxes[i]), marks.empty() || marks[i] != 0 ? 1U : 0U};
-        for_each_cell(boxes[i], [&](int c) { ids_[next[c]++] = static_cast<int>(i); });
+        for_each_cell(ranges[i], [&](int c) { ids_[--start_[c]] = static_cast<int>(i); });
     }
-    late_head_.assign(count, -1);
+    // Only the cells a late entry went into need their chain emptied (most
+    // builds have none): a full reset would write every cell again.
+    if (late_head_.size() != count) {
+        late_head_.assign(count, -1);
+    } else {
+        for (const LateEntry& e : late_) late_head_[e.cell] = -1;
+    }
     late_.clear();
 }
 
 void ContactGrid::insert(int id, const Box3& box) {
     if (id >= static_cast<int>(boxes_.size())) boxes_.resize(static_cast<std::size_t>(id) + 1);
     boxes_[id] = {outward(box), 1U};
-    for_each_cell(box, [&](int c) {
-        late_.push_back({id, late_head_[c]});
+    for_each_cell(CellRange{cell_of(box.lo), cell_of(box.hi)}, [&](int c) {
+        late_.push_back({id, late_head_[c], c});
         late_head_[c] = static_cast<int>(late_.size()) - 1;
     });
 }

@@ -75,6 +75,11 @@ private:
     struct LateEntry {
         int id;
         int next;
+        int cell;  // whose chain it heads or continues
+    };
+    // The cells a box overlaps: the lowest and the highest, per axis.
+    struct CellRange {
+        std::array<int, 3> lo, hi;
     };
     // The cell holding p, clamped into the grid. (A truncating cast, not
     // std::floor, which is a library call in a portable build: the value is
@@ -89,7 +94,7 @@ private:
     }
     static FloatBox outward(const Box3& box);
     template <class Fn>
-    void for_each_cell(const Box3& box, Fn&& fn) const;
+    void for_each_cell(const CellRange& range, Fn&& fn) const;
 
     Vec3 origin_ = Vec3::Zero();
     double inverse_cell_ = 1.0;
@@ -99,7 +104,7 @@ private:
     std::vector<ListedBox> boxes_;      // per id
     std::vector<int> late_head_;        // per cell: the last inserted chain entry, -1 = none
     std::vector<LateEntry> late_;
-    std::vector<std::uint32_t> fill_cursor_;  // build()'s scratch: each cell's next free slot
+    std::vector<CellRange> range_scratch_;  // build()'s scratch: each box's cells
 };
 
 }  // namespace morphogen

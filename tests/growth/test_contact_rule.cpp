@@ -185,6 +185,42 @@ TEST_CASE("the contact grid finds every listed box a query meets, marked and lat
     }
 }
 
+TEST_CASE("the contact grid built again after late inserts forgets them", "[contact]") {
+    // A build resets only the cells late entries went into when the grid
+    // keeps its size: after inserts of new ids, a build of fewer boxes over
+    // the same bounds (the same cells) must find exactly its own boxes, and
+    // so must one over other bounds (other cells).
+    std::mt19937 random(11);
+    std::uniform_real_distribution<double> where(-3.0, 3.0), size(0.05, 0.9);
+    const auto random_box = [&] {
+        const Vec3 lo(where(random), where(random), where(random));
+        return Box3{lo, lo + Vec3(size(random), size(random), size(random))};
+    };
+    std::vector<Box3> boxes(200);
+    for (Box3& box : boxes) box = random_box();
+    boxes[0] = Box3{Vec3(-4, -4, -4), Vec3(-3.9, -3.9, -3.9)};  // fixes the bounds for both builds
+    boxes[1] = Box3{Vec3(4, 4, 4), Vec3(4.1, 4.1, 4.1)};
+    ContactGrid grid;
+    for (const double shift : {0.0, 0.0, 2.5}) {
+        std::vector<Box3> listed = boxes;
+        for (Box3& box : listed) box = Box3{box.lo.array() + shift, box.hi.array() + shift};
+        grid.build(listed, 0.6);
+        for (int q = 0; q < 300; ++q) {
+            const Vec3 p = Vec3(where(random), where(random), where(random)).array() + shift;
+            const Box3 query{p, p + Vec3(0.3, 0.2, 0.1)};
+            std::set<int> found;
+            grid.for_each_meeting(query, [&](int id) { found.insert(id); });
+            std::set<int> expected;
+            for (std::size_t i = 0; i < listed.size(); ++i)
+                if (listed[i].overlaps(query)) expected.insert(static_cast<int>(i));
+            CHECK(found == expected);
+        }
+        // Late ids after this build, all over the grid: the next build must
+        // not report them.
+        for (int k = 0; k < 40; ++k) grid.insert(static_cast<int>(listed.size()) + k, random_box());
+    }
+}
+
 TEST_CASE("touch on a hand-worked slab: exactly the vertices of a contact stay", "[contact]") {
     const TriMesh flat = slab();
     // T comes down to 0.05 above B (within 0.1 of the bottom's faces around
