@@ -84,7 +84,6 @@ MeshArrays mushroom() {
         {-3, -3, -0.5}, {3, 3, 5.6}, kGrid);
 }
 
-
 // The limbs' thicknesses are the arms' diameter within 20 % (a marching-
 // tetrahedra surface zigzags: its level curves are a few % longer than a
 // circle, more where a limb bends or a fillet joins).

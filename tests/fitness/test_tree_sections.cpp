@@ -12,9 +12,6 @@
 using namespace morphogen;
 using namespace morphogen::test;
 
-namespace {
-}  // namespace
-
 TEST_CASE("tree sections: a trunk under three crowns, a box, a sphere", "[fitness][tree]") {
     // Lowest quarter: the trunk alone, width sqrt(2). Upper half: the plane
     // at z = 10 counts the crowns' bottoms as above it (z >= h), so it cuts

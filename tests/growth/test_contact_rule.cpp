@@ -25,6 +25,22 @@ using namespace morphogen::testing;
 
 namespace {
 
+// Random boxes in [-3, 3]^3 of the sizes the rule lists (faces grown by r),
+// and random coordinates for queries, from one seeded stream.
+class RandomBoxes {
+public:
+    explicit RandomBoxes(unsigned seed) : random_(seed) {}
+    double coordinate() { return where_(random_); }
+    Box3 operator()() {
+        const Vec3 lo(where_(random_), where_(random_), where_(random_));
+        return Box3{lo, lo + Vec3(size_(random_), size_(random_), size_(random_))};
+    }
+
+private:
+    std::mt19937 random_;
+    std::uniform_real_distribution<double> where_{-3.0, 3.0}, size_{0.05, 0.9};
+};
+
 // A closed slab: a 3 x 3 grid of vertices on top (z = 1, vertex i + 3j at
 // (i, j)) and one below (z = 0, vertex 9 + i + 3j), each square cut along
 // (i, j)-(i+1, j+1), the rims joined by walls; outward oriented. Vertex 4 is
@@ -141,12 +157,7 @@ TEST_CASE("the contact grid finds every listed box a query meets, marked and lat
     // them marked; then some ids listed again elsewhere (a split's or a flip's
     // faces) and a few new ones. Every query is checked against brute force
     // over each id's latest box; an id may come more than once, never wrongly.
-    std::mt19937 random(7);
-    std::uniform_real_distribution<double> where(-3.0, 3.0), size(0.05, 0.9);
-    const auto random_box = [&] {
-        const Vec3 lo(where(random), where(random), where(random));
-        return Box3{lo, lo + Vec3(size(random), size(random), size(random))};
-    };
+    RandomBoxes random_box(7);
     std::vector<Box3> boxes(300);
     std::vector<char> marks(boxes.size());
     for (std::size_t i = 0; i < boxes.size(); ++i) {
@@ -166,7 +177,8 @@ TEST_CASE("the contact grid finds every listed box a query meets, marked and lat
         grid.insert(static_cast<int>(boxes.size()) - 1, boxes.back());
     }
     for (int q = 0; q < 400; ++q) {
-        const Vec3 p(where(random) * 1.2 + (q % 7 == 0 ? 6.0 : 0.0), where(random), where(random));
+        const Vec3 p(random_box.coordinate() * 1.2 + (q % 7 == 0 ? 6.0 : 0.0), random_box.coordinate(),
+                     random_box.coordinate());
         const Box3 query{p, p + Vec3(0.1, 0.05, 0.02) * (q % 4)};
         for (const bool marked_only : {false, true}) {
             std::set<int> found;
@@ -187,15 +199,10 @@ TEST_CASE("the contact grid finds every listed box a query meets, marked and lat
 
 TEST_CASE("the contact grid built again after late inserts forgets them", "[contact]") {
     // A build resets only the cells late entries went into when the grid
-    // keeps its size: after inserts of new ids, a build of fewer boxes over
-    // the same bounds (the same cells) must find exactly its own boxes, and
-    // so must one over other bounds (other cells).
-    std::mt19937 random(11);
-    std::uniform_real_distribution<double> where(-3.0, 3.0), size(0.05, 0.9);
-    const auto random_box = [&] {
-        const Vec3 lo(where(random), where(random), where(random));
-        return Box3{lo, lo + Vec3(size(random), size(random), size(random))};
-    };
+    // keeps its size: after inserts of new ids, a build of the same boxes
+    // over the same bounds (the same cells) must find exactly its own boxes,
+    // and so must one over other bounds (other cells).
+    RandomBoxes random_box(11);
     std::vector<Box3> boxes(200);
     for (Box3& box : boxes) box = random_box();
     boxes[0] = Box3{Vec3(-4, -4, -4), Vec3(-3.9, -3.9, -3.9)};  // fixes the bounds for both builds
@@ -206,7 +213,8 @@ TEST_CASE("the contact grid built again after late inserts forgets them", "[cont
         for (Box3& box : listed) box = Box3{box.lo.array() + shift, box.hi.array() + shift};
         grid.build(listed, 0.6);
         for (int q = 0; q < 300; ++q) {
-            const Vec3 p = Vec3(where(random), where(random), where(random)).array() + shift;
+            const Vec3 p =
+                Vec3(random_box.coordinate(), random_box.coordinate(), random_box.coordinate()).array() + shift;
             const Box3 query{p, p + Vec3(0.3, 0.2, 0.1)};
             std::set<int> found;
             grid.for_each_meeting(query, [&](int id) { found.insert(id); });
