@@ -88,7 +88,8 @@ PlantScore plant_score(MeshView mesh, const PlantFitnessParams& params) {
     const Architecture architecture = measure_architecture(mesh, skeleton_only);
     s.tips = architecture.tips;
     s.moment = bending_moment(mesh, foot_axis(mesh, zmin, params.root_height));
-    s.cost = 1.0 + params.moment_cost * s.moment;
+    s.volume = std::max(0.0, mesh_volume(mesh));
+    s.cost = 1.0 + params.moment_cost * s.moment + params.volume_cost * s.volume;
     // Light is the costly part: skip it when no tip stands above the foot.
     const auto above_foot = [zmin](const Vec3& tip) { return tip.z() > zmin; };
     if (std::none_of(architecture.tip_points.begin(), architecture.tip_points.end(), above_foot)) return s;

@@ -8,7 +8,7 @@
 //   plant = sqrt(light · reproduction) / cost
 //   light        = Σ_f area_f · (1 + K) · I_f / (I_f + K)      I_f = light_f / area_f
 //   reproduction = Σ_tips (z_tip − z_min) · S_t / (S_t + H)
-//   cost         = 1 + moment_cost · Σ_f area_f · r_f
+//   cost         = 1 + moment_cost · Σ_f area_f · r_f + volume_cost · V
 //
 // light_f is what face f catches of the suns (light_per_face, so the plant
 // shades itself); the rectangular hyperbola is a leaf's light response:
@@ -23,7 +23,8 @@
 // the light at which a tip bears half (H = 0: every tip bears in full, as
 // before). r_f is the horizontal
 // distance of face f's centroid from the foot's axis, so Σ area·r is the
-// bending moment of a surface of even weight about the foot. A plant whose
+// bending moment of a surface of even weight about the foot; V is the enclosed
+// volume (the wood a solid body costs to build). A plant whose
 // lowest vertex is above root_height floats, and scores 0.
 #include "fitness/architecture.hpp"
 #include "fitness/light.hpp"
@@ -35,6 +36,7 @@ struct PlantFitnessParams {
     LightParams light;            // the `light` keys and defaults
     double half_saturation = 0.25;  // K, > 0
     double moment_cost = 0.0002;   // per unit of area × lever arm, >= 0
+    double volume_cost = 0.0;      // per unit of enclosed volume, >= 0
     double root_height = 0.1;     // the lowest vertex must be at or below this z
     double shoot_radius = 2.5;    // a tip is fed by the lit faces this near (and nearest to it), > 0
     double shoot_half_light = 4.0;  // H: a tip fed this much light bears half, >= 0 (0 = every tip in full)
@@ -43,7 +45,7 @@ struct PlantFitnessParams {
 
 struct PlantScore {
     bool rooted = false;
-    double light = 0, reproduction = 0, moment = 0, cost = 1, score = 0;
+    double light = 0, reproduction = 0, moment = 0, volume = 0, cost = 1, score = 0;
     int tips = 0;
     double bearing_tips = 0;  // Σ_t S_t / (S_t + H): the tips that bear, each weighted by its light
 };

@@ -107,6 +107,7 @@ void read_light_params(ObjectReader& reader, LightParams& params) {
     params.azimuths_deg = reader.number_list("azimuths_deg", params.azimuths_deg, -360.0, 360.0);
     params.spacing = reader.number("spacing", params.spacing, 0.0, kBig, /*min_exclusive=*/true);
     params.min_height = reader.number("min_height", params.min_height, -kBig, kBig);
+    params.stand_spacing = reader.number("stand_spacing", params.stand_spacing, 0.0, kBig);
     const std::string elevations = reader.path_of("elevations_deg");
     if (params.elevations_deg.empty()) reader.issues().add(elevations, "needs at least one sun elevation");
     for (std::size_t i = 0; i < params.elevations_deg.size(); ++i)
@@ -140,6 +141,7 @@ std::unique_ptr<FitnessFunction> read_plant(ObjectReader& reader) {
     read_light_params(reader, params.light);
     params.half_saturation = reader.number("half_saturation", params.half_saturation, 0.0, kBig, /*min_exclusive=*/true);
     params.moment_cost = reader.number("moment_cost", params.moment_cost, 0.0, kBig);
+    params.volume_cost = reader.number("volume_cost", params.volume_cost, 0.0, kBig);
     params.root_height = reader.number("root_height", params.root_height, -kBig, kBig);
     params.shoot_radius = reader.number("shoot_radius", params.shoot_radius, 0.0, kBig, /*min_exclusive=*/true);
     params.shoot_half_light = reader.number("shoot_half_light", params.shoot_half_light, 0.0, kBig);

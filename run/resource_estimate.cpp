@@ -170,6 +170,9 @@ void add_fitness(FitnessCost& cost, const json& section, const std::string& path
         if (const json& e = at_or_null(section, "elevations_deg"); e.is_array()) p.elevations_deg = e.get<std::vector<double>>();
         if (const json& a = at_or_null(section, "azimuths_deg"); a.is_array()) p.azimuths_deg = a.get<std::vector<double>>();
         if (const json& s = at_or_null(section, "spacing"); s.is_number()) p.spacing = s.get<double>();
+        // In a stand the rays meet a tree of the plant and its eight copies.
+        const json& stand = at_or_null(section, "stand_spacing");
+        const double scene_faces = stand.is_number() && stand.get<double>() > 0.0 ? 9 * faces : faces;
         double suns = 0;
         for (double e : p.elevations_deg) suns += e == 90.0 ? 1.0 : static_cast<double>(p.azimuths_deg.size());
         // Rays per sun: the lattice covers the projected box of the mesh, whose
@@ -177,11 +180,11 @@ void add_fitness(FitnessCost& cost, const json& section, const std::string& path
         const double side = reach.width() / p.spacing + 3;
         const double rays = side * side;
         const std::vector<std::string> keys = with({path + ".spacing"}, reach_keys);
-        cost.bytes = std::max(cost.bytes, faces * light_tree_bytes_per_face);
-        const double per_ray = light_ray_second + light_ray_second_per_level * std::log2(faces + 2);
+        cost.bytes = std::max(cost.bytes, scene_faces * light_tree_bytes_per_face);
+        const double per_ray = light_ray_second + light_ray_second_per_level * std::log2(scene_faces + 2);
         cost.work.push_back({"light: " + group(suns) + " suns x up to " + group(rays) + " rays (" + path + ")",
                              with(keys, {path + ".elevations_deg", path + ".azimuths_deg"}),
-                             suns * rays * per_ray + faces * light_tree_second_per_face});
+                             suns * rays * per_ray + scene_faces * light_tree_second_per_face});
         cost.caps.push_back({"light rays per sun (" + path + ".spacing " + group(p.spacing) +
                                  " over a plant up to " + group(std::ceil(reach.width())) + " wide)",
                              keys, rays, light_max_rays_per_sun});

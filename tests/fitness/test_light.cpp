@@ -63,3 +63,35 @@ TEST_CASE("light: min_height and the sun set", "[fitness][light]") {
     for (const Vec3& sun : sun_directions(LightParams{})) CHECK(sun.norm() == Approx(1.0));
     CHECK(light_captured(MeshArrays{}.view(), params) == 0.0);
 }
+
+TEST_CASE("light: a stand of copies shades the plant's sides, not its top", "[fitness][light]") {
+    // A box 0.2 deep (x), 0.4 wide (y), 1 high, under one sun from +x at 45 degrees.
+    // Alone it catches its top and its +x side, (0.08 + 0.4) · cos 45.
+    const MeshArrays box = make_box({0, 0, 0}, {0.2, 0.4, 1});
+    LightParams params;
+    params.elevations_deg = {45.0};
+    params.azimuths_deg = {0.0};
+    params.spacing = 0.004;
+    const double alone = light_captured(box.view(), params);
+    CHECK(alone == Approx(0.48 * std::sqrt(0.5)).epsilon(0.01));
+    // Copies every 0.5: the one at x = 0.5 hides the +x side below z = 0.7 (a ray that reaches
+    // the side at z passed x = 0.5 at z + 0.3), the top stays lit: (0.08 + 0.4 · 0.3) · cos 45.
+    params.stand_spacing = 0.5;
+    const double stand = light_captured(box.view(), params);
+    CHECK(stand == Approx(0.2 * std::sqrt(0.5)).epsilon(0.02));
+    const std::vector<double> per_face = light_per_face(box.view(), params);
+    REQUIRE(per_face.size() == box.faces.size());
+    double sum = 0.0;
+    for (double light : per_face) sum += light;
+    CHECK(sum == Approx(stand).epsilon(1e-12));
+    // Neighbours farther than the shadow's reach change nothing.
+    params.stand_spacing = 50.0;
+    CHECK(light_captured(box.view(), params) == Approx(alone).epsilon(1e-3));
+    // The stand itself: the plant's faces first, then eight copies on the lattice.
+    const MeshArrays block = stand_of(box.view(), 0.5);
+    REQUIRE(block.faces.size() == 9 * box.faces.size());
+    CHECK(block.positions[box.positions.size()] == box.positions[0] + Vec3(-0.5, -0.5, 0));
+    CHECK(stand_of(box.view(), 0.0).faces.size() == box.faces.size());
+    params.stand_spacing = -1.0;
+    CHECK_THROWS_AS(light_captured(box.view(), params), std::invalid_argument);
+}

@@ -142,6 +142,20 @@ TEST_CASE("plant fitness: weight held away from the foot costs more", "[fitness]
     CHECK(aside_moment > centred_moment + 100.0);
 }
 
+TEST_CASE("plant fitness: the wood of a solid body costs by its volume", "[fitness][plant]") {
+    // A post 1 x 1 x 8 under a box 2 x 2 x 2: 16 units of volume.
+    const MeshArrays tree = merge(make_box({-0.5, -0.5, 0}, {0.5, 0.5, 8}), make_box({-1, -1, 8}, {1, 1, 10}));
+    PlantFitnessParams params;
+    params.light = one_sun(90);
+    const PlantScore free = plant_score(tree.view(), params);
+    CHECK(free.volume == Approx(16.0));
+    CHECK(free.cost == Approx(1.0 + params.moment_cost * free.moment));
+    params.volume_cost = 0.05;
+    const PlantScore costly = plant_score(tree.view(), params);
+    CHECK(costly.cost == Approx(1.0 + params.moment_cost * free.moment + 0.05 * 16.0));
+    CHECK(costly.score == Approx(free.score * free.cost / costly.cost));
+}
+
 TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][config]") {
     ConfigIssues issues;
     const json section = json::parse(R"({"type": "plant", "spacing": 0.25})");
@@ -156,6 +170,8 @@ TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][c
     CHECK(resolved["root_height"] == 0.1);
     CHECK(resolved["shoot_radius"] == 2.5);
     CHECK(resolved["shoot_half_light"] == 4.0);
+    CHECK(resolved["volume_cost"] == 0.0);
+    CHECK(resolved["stand_spacing"] == 0.0);
     CHECK(resolved["spacing"] == 0.25);
 
     const auto first_issue = [](const char* text) {
@@ -169,5 +185,7 @@ TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][c
     CHECK(first_issue(R"({"type": "plant", "moment_cost": -1})").starts_with("fitness.moment_cost"));
     CHECK(first_issue(R"({"type": "plant", "shoot_radius": 0})").starts_with("fitness.shoot_radius"));
     CHECK(first_issue(R"({"type": "plant", "shoot_half_light": -1})").starts_with("fitness.shoot_half_light"));
+    CHECK(first_issue(R"({"type": "plant", "volume_cost": -1})").starts_with("fitness.volume_cost"));
+    CHECK(first_issue(R"({"type": "plant", "stand_spacing": -1})").starts_with("fitness.stand_spacing"));
     CHECK(first_issue(R"({"type": "plant", "trunk_target": 0.2})").starts_with("fitness.trunk_target: unknown key"));
 }
