@@ -82,7 +82,7 @@ TEST_CASE("every registered type reads with its defaults", "[fitness][config]") 
     }
     const Read light = read(json{{"type", "light"}});
     CHECK(light.resolved == json::parse(R"({"type": "light", "elevations_deg": [90.0, 45.0],
-        "azimuths_deg": [0.0, 90.0, 180.0, 270.0], "spacing": 0.1, "min_height": 0.0,
+        "azimuths_deg": [0.0, 90.0, 180.0, 270.0], "spacing": 0.1, "min_height": 0.0, "stand_spacing": 0.0,
         "reject_self_intersecting": false})"));
 }
 
