@@ -53,6 +53,16 @@ std::string number_text(const nlohmann::json& value) {
     return text;
 }
 
+// The fitness's parts, or none where computing them throws (the score is
+// then invalid and says why).
+FitnessFunction::Terms fitness_terms(const Fitness& fitness, MeshView mesh) {
+    try {
+        return fitness.function().terms(mesh);
+    } catch (const std::exception&) {
+        return {};
+    }
+}
+
 // A mesh file that reads but holds nothing to score is an invalid mesh
 // (exit 4), named like every other mesh error.
 void require_scorable(const MeshArrays& mesh, const std::string& source) {
@@ -86,6 +96,10 @@ int run_score(const ScoreOptions& options) {
                                  {"fitness_valid", outcome.valid}};
         report["fitness"] = outcome.valid ? nlohmann::json(outcome.score) : nlohmann::json();  // null if invalid
         if (!outcome.valid) report["fitness_error"] = outcome.error;
+        if (const FitnessFunction::Terms terms = fitness_terms(*config.fitness, mesh.view()); !terms.empty()) {
+            nlohmann::json& parts = report["fitness_terms"] = nlohmann::json::object();
+            for (const auto& [name, value] : terms) parts[name] = value;
+        }
         report.update(metrics);
         report["architecture"] = architecture;
         std::printf("%s\n", report.dump(2).c_str());
@@ -96,6 +110,8 @@ int run_score(const ScoreOptions& options) {
         std::printf("  %-18s %s (%s)\n", "fitness", number_text(outcome.score).c_str(), type.c_str());
     else
         std::printf("  %-18s invalid (%s): %s\n", "fitness", type.c_str(), outcome.error.c_str());
+    for (const auto& [name, value] : fitness_terms(*config.fitness, mesh.view()))
+        std::printf("  %-18s %s\n", ("  " + name).c_str(), number_text(value).c_str());
     for (const char* key : {"canopy", "height", "footprint", "area", "volume", "vertices", "faces", "self_intersecting"})
         std::printf("  %-18s %s\n", key, number_text(metrics.at(key)).c_str());
     std::printf("  %-18s tips %s, limbs %s, first fork at %s, Strahler %s, solidity %s\n", "architecture",

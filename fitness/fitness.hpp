@@ -16,6 +16,7 @@
 #include <memory>
 #include <mutex>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace morphogen {
@@ -29,6 +30,11 @@ public:
     virtual double evaluate(MeshView mesh) const = 0;
     // Whether evaluate() may run concurrently on one instance.
     virtual bool thread_safe() const { return true; }
+    // The named parts the score is made of (for `morphogen score`: why a mesh
+    // scores what it does), in a fixed order; empty for a type with no parts.
+    // May throw what evaluate() throws.
+    using Terms = std::vector<std::pair<std::string, double>>;
+    virtual Terms terms(MeshView) const { return {}; }
 };
 
 struct FitnessOutcome {

@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <unordered_map>
 
 namespace morphogen {
 
@@ -39,29 +41,34 @@ double bending_moment(MeshView mesh, const Eigen::Vector2d& axis) {
 
 namespace {
 
-// What face i yields of the light it catches (the rectangular hyperbola).
-double face_yield(MeshView mesh, std::size_t i, double light, double K) {
-    const double area = face_area(mesh, mesh.faces[i]);
-    if (!(area > 0.0) || light <= 0.0) return 0.0;
-    const double irradiance = light / area;
+// The rectangular hyperbola: what `area` yields at mean relative irradiance
+// `irradiance` (a leaf's light response).
+double saturating_yield(double area, double irradiance, double K) {
     return area * (1.0 + K) * irradiance / (irradiance + K);
 }
 
-}  // namespace
+// Leaves: the 3-D cells of side leaf_size that hold the faces' centroids.
+struct LeafKey {
+    long long x, y, z;
+    bool operator==(const LeafKey&) const = default;
+};
+struct LeafKeyHash {
+    std::size_t operator()(const LeafKey& k) const {
+        return std::hash<long long>()(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+    }
+};
 
-double saturating_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation) {
-    double light = 0.0;
-    for (std::size_t i = 0; i < mesh.faces.size(); ++i) light += face_yield(mesh, i, light_per_face[i], half_saturation);
-    return light;
+Vec3 centroid_of(MeshView mesh, const Face& f) {
+    return (mesh.positions[f[0]] + mesh.positions[f[1]] + mesh.positions[f[2]]) / 3.0;
 }
 
-std::vector<double> shoot_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation,
-                                const std::vector<Vec3>& tips, double shoot_radius) {
+// Σ_t S_t's terms from per-face yields: each face to the nearest tip within reach.
+std::vector<double> shoots_from_yields(MeshView mesh, const std::vector<double>& yields, const std::vector<Vec3>& tips,
+                                       double shoot_radius) {
     std::vector<double> shoots(tips.size(), 0.0);
     for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
-        if (light_per_face[i] <= 0.0) continue;
-        const Face& f = mesh.faces[i];
-        const Vec3 centroid = (mesh.positions[f[0]] + mesh.positions[f[1]] + mesh.positions[f[2]]) / 3.0;
+        if (yields[i] <= 0.0) continue;
+        const Vec3 centroid = centroid_of(mesh, mesh.faces[i]);
         std::size_t nearest = tips.size();
         double nearest_distance = shoot_radius;
         for (std::size_t t = 0; t < tips.size(); ++t) {
@@ -69,9 +76,55 @@ std::vector<double> shoot_light(MeshView mesh, const std::vector<double>& light_
             if (distance <= nearest_distance && (nearest == tips.size() || distance < nearest_distance))
                 nearest = t, nearest_distance = distance;
         }
-        if (nearest < tips.size()) shoots[nearest] += face_yield(mesh, i, light_per_face[i], half_saturation);
+        if (nearest < tips.size()) shoots[nearest] += yields[i];
     }
     return shoots;
+}
+
+}  // namespace
+
+std::vector<double> face_yields(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation,
+                                double leaf_size) {
+    const double K = half_saturation;
+    std::vector<double> areas(mesh.faces.size()), yields(mesh.faces.size(), 0.0);
+    for (std::size_t i = 0; i < mesh.faces.size(); ++i) areas[i] = face_area(mesh, mesh.faces[i]);
+    if (!(leaf_size > 0.0)) {  // every face its own leaf
+        for (std::size_t i = 0; i < mesh.faces.size(); ++i)
+            if (areas[i] > 0.0 && light_per_face[i] > 0.0)
+                yields[i] = saturating_yield(areas[i], light_per_face[i] / areas[i], K);
+        return yields;
+    }
+    struct Leaf {
+        double area = 0.0, light = 0.0;
+    };
+    std::unordered_map<LeafKey, Leaf, LeafKeyHash> leaves;
+    std::vector<Leaf*> leaf_of(mesh.faces.size(), nullptr);
+    for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
+        if (!(areas[i] > 0.0)) continue;
+        const Vec3 c = centroid_of(mesh, mesh.faces[i]) / leaf_size;
+        // Clamped so that the cast is defined for any finite mesh (cells that far out merge).
+        const auto cell = [](double v) { return static_cast<long long>(std::floor(std::clamp(v, -1e15, 1e15))); };
+        const LeafKey key{cell(c.x()), cell(c.y()), cell(c.z())};
+        Leaf& leaf = leaves[key];  // references into an unordered_map stay valid as it grows
+        leaf.area += areas[i], leaf.light += light_per_face[i];
+        leaf_of[i] = &leaf;
+    }
+    for (std::size_t i = 0; i < mesh.faces.size(); ++i)
+        if (leaf_of[i] != nullptr && leaf_of[i]->light > 0.0)
+            yields[i] = saturating_yield(areas[i], leaf_of[i]->light / leaf_of[i]->area, K);
+    return yields;
+}
+
+double saturating_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation,
+                        double leaf_size) {
+    double light = 0.0;
+    for (double y : face_yields(mesh, light_per_face, half_saturation, leaf_size)) light += y;
+    return light;
+}
+
+std::vector<double> shoot_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation,
+                                const std::vector<Vec3>& tips, double shoot_radius, double leaf_size) {
+    return shoots_from_yields(mesh, face_yields(mesh, light_per_face, half_saturation, leaf_size), tips, shoot_radius);
 }
 
 PlantScore plant_score(MeshView mesh, const PlantFitnessParams& params) {
@@ -93,10 +146,10 @@ PlantScore plant_score(MeshView mesh, const PlantFitnessParams& params) {
     // Light is the costly part: skip it when no tip stands above the foot.
     const auto above_foot = [zmin](const Vec3& tip) { return tip.z() > zmin; };
     if (std::none_of(architecture.tip_points.begin(), architecture.tip_points.end(), above_foot)) return s;
-    const std::vector<double> per_face = light_per_face(mesh, params.light);
-    s.light = saturating_light(mesh, per_face, params.half_saturation);
-    const std::vector<double> shoots =
-        shoot_light(mesh, per_face, params.half_saturation, architecture.tip_points, params.shoot_radius);
+    const std::vector<double> yields =
+        face_yields(mesh, light_per_face(mesh, params.light), params.half_saturation, params.leaf_size);
+    for (double y : yields) s.light += y;
+    const std::vector<double> shoots = shoots_from_yields(mesh, yields, architecture.tip_points, params.shoot_radius);
     for (std::size_t t = 0; t < shoots.size(); ++t) {
         const double H = params.shoot_half_light;
         const double bearing = H > 0.0 ? shoots[t] / (shoots[t] + H) : 1.0;

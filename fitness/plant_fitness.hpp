@@ -6,7 +6,7 @@
 // its body up. Scored as Niklas combines the tasks:
 //
 //   plant = sqrt(light · reproduction) / cost
-//   light        = Σ_f area_f · (1 + K) · I_f / (I_f + K)      I_f = light_f / area_f
+//   light        = Σ_f area_f · (1 + K) · I_f / (I_f + K)      I_f = Σ_leaf light / Σ_leaf area
 //   reproduction = Σ_tips (z_tip − z_min) · S_t / (S_t + H)
 //   cost         = 1 + moment_cost · Σ_f area_f · r_f + volume_cost · V
 //
@@ -15,6 +15,11 @@
 // a face in full sun (I_f ≈ 1) yields its area, and more sun gains nothing
 // more, so spreading the same light over more surface pays (K the relative
 // irradiance at which a face yields half; K → ∞ gives the plain light).
+// I_f is the mean irradiance of the face's leaf (the faces whose centroids
+// share a cube of side leaf_size), not of the face alone: a face smaller
+// than a ray's cross-section is hit by one ray or none, and the hyperbola,
+// concave, undercounts such a sampled irradiance (a surface of 0.02-unit²
+// faces caught a quarter of its light at the rays' spacing 0.25).
 // Tips are the skeleton's (fitness/architecture.hpp). S_t is the tip's own
 // light: the saturating light of the faces whose centroid is nearer to tip t
 // than to any other tip and within shoot_radius of it (a shoot feeds its
@@ -35,6 +40,7 @@ namespace morphogen {
 struct PlantFitnessParams {
     LightParams light;            // the `light` keys and defaults
     double half_saturation = 0.25;  // K, > 0
+    double leaf_size = 1.0;         // side of the cubes whose faces saturate together, >= 0 (0: each face alone)
     double moment_cost = 0.0002;   // per unit of area × lever arm, >= 0
     double volume_cost = 0.0;      // per unit of enclosed volume, >= 0
     double root_height = 0.1;     // the lowest vertex must be at or below this z
@@ -53,12 +59,20 @@ struct PlantScore {
 // Thread-safe. Throws what light_per_face and measure_architecture throw.
 PlantScore plant_score(MeshView mesh, const PlantFitnessParams& params);
 
-// The light term alone (the sum over faces above), for tests.
-double saturating_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation);
+// What each face yields: its area through the hyperbola at the mean
+// irradiance of its leaf, the faces whose centroids share a cube of side
+// leaf_size (leaf_size 0: each face alone). A leaf's yield is the sum of its
+// faces'; a face in a lit leaf yields even if no ray hit it.
+std::vector<double> face_yields(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation,
+                                double leaf_size);
+
+// The light term alone (the sum of face_yields), for tests.
+double saturating_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation,
+                        double leaf_size = 0.0);
 
 // S_t above: each tip's share of the saturating light (faces nearest to it
 // within shoot_radius; a face equally near two tips goes to the first).
 std::vector<double> shoot_light(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation,
-                                const std::vector<Vec3>& tips, double shoot_radius);
+                                const std::vector<Vec3>& tips, double shoot_radius, double leaf_size = 0.0);
 
 }  // namespace morphogen

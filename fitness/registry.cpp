@@ -56,6 +56,12 @@ public:
     explicit PlantFunction(PlantFitnessParams params) : params_(std::move(params)) {}
     std::string type() const override { return "plant"; }
     double evaluate(MeshView mesh) const override { return plant_score(mesh, params_).score; }
+    Terms terms(MeshView mesh) const override {
+        const PlantScore s = plant_score(mesh, params_);
+        return {{"light", s.light},     {"reproduction", s.reproduction}, {"tips", s.tips},
+                {"bearing_tips", s.bearing_tips}, {"moment", s.moment},     {"volume", s.volume},
+                {"cost", s.cost}};
+    }
 
 private:
     PlantFitnessParams params_;
@@ -140,6 +146,7 @@ std::unique_ptr<FitnessFunction> read_plant(ObjectReader& reader) {
     PlantFitnessParams params;
     read_light_params(reader, params.light);
     params.half_saturation = reader.number("half_saturation", params.half_saturation, 0.0, kBig, /*min_exclusive=*/true);
+    params.leaf_size = reader.number("leaf_size", params.leaf_size, 0.0, kBig);
     params.moment_cost = reader.number("moment_cost", params.moment_cost, 0.0, kBig);
     params.volume_cost = reader.number("volume_cost", params.volume_cost, 0.0, kBig);
     params.root_height = reader.number("root_height", params.root_height, -kBig, kBig);

@@ -236,12 +236,14 @@ TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]
         auto document_with = [&](const json& value) {
             json document = json::object();
             document[section][key] = value;
-            if (section == "fitness" && (key == "spacing" || key == "min_height")) document[section]["type"] = "light";
+            if (section == "fitness" && (key == "spacing" || key == "min_height" || key == "stand_spacing"))
+                document[section]["type"] = "light";
             if (section == "fitness" && (key == "trunk_target" || key == "trunk_power" || key == "loops_target" ||
                                          key == "material_cost" || key == "root_height"))
                 document[section]["type"] = "tree";
-            if (section == "fitness" && (key == "half_saturation" || key == "moment_cost" ||
-                                         key == "shoot_radius" || key == "shoot_half_light")) document[section]["type"] = "plant";
+            if (section == "fitness" && (key == "half_saturation" || key == "moment_cost" || key == "shoot_radius" ||
+                                         key == "shoot_half_light" || key == "volume_cost" || key == "leaf_size"))
+                document[section]["type"] = "plant";
             if (section == "growth" && key == "turn_rate") document[section]["mode"] = "branching";
             if (section == "growth" && key == "contact_distance") document[section]["collisions"] = "touch";
             return document;

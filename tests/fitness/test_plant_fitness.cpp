@@ -8,6 +8,7 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -26,6 +27,20 @@ LightParams one_sun(double elevation_deg) {
 }
 
 double sum(const std::vector<double>& values) { return std::accumulate(values.begin(), values.end(), 0.0); }
+
+// A side × side square at z = 0 cut into n × n cells of two triangles each.
+MeshArrays grid_square(double side, int n) {
+    MeshArrays m;
+    for (int j = 0; j <= n; ++j)
+        for (int i = 0; i <= n; ++i) m.positions.emplace_back(side * i / n, side * j / n, 0.0);
+    for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+            const int a = j * (n + 1) + i, b = a + 1, c = a + n + 1, d = c + 1;
+            m.faces.push_back({a, b, d});
+            m.faces.push_back({a, d, c});
+        }
+    return m;
+}
 
 }  // namespace
 
@@ -60,6 +75,38 @@ TEST_CASE("plant fitness: a face's yield saturates with its light", "[fitness][p
     CHECK(saturating_light(square.view(), low, 1e9) == Approx(sum(low)).epsilon(1e-6));
     // A half-lit face yields more than the light it catches: spreading light pays.
     CHECK(saturating_light(square.view(), low, 0.25) > sum(low));
+}
+
+TEST_CASE("plant fitness: a leaf saturates, not a triangle, so the light does not depend on the triangulation",
+          "[fitness][plant]") {
+    // A 10 x 10 square under a sun 30 degrees up: I = 1/2, so it yields (1 + K) / (1 + 2K) of its area.
+    const double expected = 100.0 * 1.25 / 1.5;
+    const MeshArrays coarse = grid_square(10.0, 1);  // 2 faces of 50 units²
+    const MeshArrays fine = grid_square(10.0, 80);   // faces of 0.0078 units², smaller than a ray's 0.0625
+    LightParams sun = one_sun(30);
+    sun.spacing = 0.25;
+    const std::vector<double> coarse_light = light_per_face(coarse.view(), sun);
+    const std::vector<double> fine_light = light_per_face(fine.view(), sun);
+    CHECK(sum(fine_light) == Approx(sum(coarse_light)).epsilon(0.02));  // the same rays land
+    // Each face alone: the fine square's faces are hit by one ray or none, and the concave
+    // hyperbola undercounts that sampled irradiance.
+    CHECK(saturating_light(coarse.view(), coarse_light, 0.25, 0.0) == Approx(expected).epsilon(0.02));
+    CHECK(saturating_light(fine.view(), fine_light, 0.25, 0.0) < 0.8 * expected);
+    // Leaves of side 1 (about 8 rays each here): both give the square's yield.
+    for (const MeshArrays* square : {&coarse, &fine}) {
+        const std::vector<double> light = square == &coarse ? coarse_light : fine_light;
+        CHECK(saturating_light(square->view(), light, 0.25, 1.0) == Approx(expected).epsilon(0.03));
+        CHECK(sum(face_yields(square->view(), light, 0.25, 1.0)) ==
+              Approx(saturating_light(square->view(), light, 0.25, 1.0)).epsilon(1e-12));
+    }
+    // Within a leaf every face takes the leaf's mean irradiance, lit by a ray or not.
+    const std::vector<double> yields = face_yields(fine.view(), fine_light, 0.25, 1.0);
+    CHECK(std::count(fine_light.begin(), fine_light.end(), 0.0) > 0);
+    CHECK(std::count(yields.begin(), yields.end(), 0.0) == 0);
+    // plant_score uses the leaves: the fine and the coarse square catch the same light.
+    PlantFitnessParams params;
+    params.light = sun;
+    CHECK(plant_score(fine.view(), params).light == Approx(plant_score(coarse.view(), params).light).epsilon(0.03));
 }
 
 TEST_CASE("plant fitness: the score is its terms combined, and a plant must stand", "[fitness][plant]") {
@@ -171,6 +218,7 @@ TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][c
     CHECK(resolved["shoot_radius"] == 2.5);
     CHECK(resolved["shoot_half_light"] == 4.0);
     CHECK(resolved["volume_cost"] == 0.0);
+    CHECK(resolved["leaf_size"] == 1.0);
     CHECK(resolved["stand_spacing"] == 0.0);
     CHECK(resolved["spacing"] == 0.25);
 
@@ -186,6 +234,7 @@ TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][c
     CHECK(first_issue(R"({"type": "plant", "shoot_radius": 0})").starts_with("fitness.shoot_radius"));
     CHECK(first_issue(R"({"type": "plant", "shoot_half_light": -1})").starts_with("fitness.shoot_half_light"));
     CHECK(first_issue(R"({"type": "plant", "volume_cost": -1})").starts_with("fitness.volume_cost"));
+    CHECK(first_issue(R"({"type": "plant", "leaf_size": -1})").starts_with("fitness.leaf_size"));
     CHECK(first_issue(R"({"type": "plant", "stand_spacing": -1})").starts_with("fitness.stand_spacing"));
     CHECK(first_issue(R"({"type": "plant", "trunk_target": 0.2})").starts_with("fitness.trunk_target: unknown key"));
 }

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -104,6 +105,23 @@ TEST_CASE("score --mesh prints the fitness and every metric", "[fitness][cli]") 
     CHECK(r["fitness"].is_null());
     CHECK(r["fitness_valid"] == false);
     CHECK(r["self_intersecting"] == true);
+
+    // A fitness made of parts prints them: the plant's, which recombine to its score.
+    CHECK_FALSE(report.contains("fitness_terms"));  // canopy has none
+    const Result plant = morphogen_run("score --json --mesh " + box +
+                                       " --fitness '{\"type\": \"plant\", \"volume_cost\": 0.1, \"spacing\": 0.05}'");
+    REQUIRE(plant.code == 0);
+    const json p = json::parse(plant.out);
+    const json& terms = p["fitness_terms"];
+    CHECK(terms["volume"].get<double>() == Approx(11.0));
+    CHECK(terms["tips"] == 1.0);
+    CHECK(terms["light"].get<double>() > 0.0);
+    CHECK(terms["cost"].get<double>() == Approx(1.0 + 0.0002 * terms["moment"].get<double>() + 0.1 * 11.0));
+    CHECK(p["fitness"].get<double>() ==
+          Approx(std::sqrt(terms["light"].get<double>() * terms["reproduction"].get<double>()) / terms["cost"].get<double>()));
+    const Result plant_text = morphogen_run("score --mesh " + box + " --fitness '{\"type\": \"plant\"}'");
+    for (const char* word : {"light", "reproduction", "bearing_tips", "moment", "cost"})
+        CHECK(plant_text.out.find(word) != std::string::npos);
 
     // An open mesh has no solidity: null in JSON, said in words in text.
     const std::string open = (dir / "open.obj").string();
