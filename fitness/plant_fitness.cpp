@@ -54,7 +54,9 @@ struct LeafKey {
 };
 struct LeafKeyHash {
     std::size_t operator()(const LeafKey& k) const {
-        return std::hash<long long>()(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+        // Unsigned: wraps instead of overflowing for cells far out.
+        const auto u = [](long long v) { return static_cast<unsigned long long>(v); };
+        return std::hash<unsigned long long>()(u(k.x) * 73856093ULL ^ u(k.y) * 19349663ULL ^ u(k.z) * 83492791ULL);
     }
 };
 
