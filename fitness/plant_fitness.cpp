@@ -64,7 +64,7 @@ Vec3 centroid_of(MeshView mesh, const Face& f) {
     return (mesh.positions[f[0]] + mesh.positions[f[1]] + mesh.positions[f[2]]) / 3.0;
 }
 
-// Σ_t S_t's terms from per-face yields: each face to the nearest tip within reach.
+// Each tip's S_t from per-face yields: a face feeds the nearest tip within reach.
 std::vector<double> shoots_from_yields(MeshView mesh, const std::vector<double>& yields, const std::vector<Vec3>& tips,
                                        double shoot_radius) {
     std::vector<double> shoots(tips.size(), 0.0);
