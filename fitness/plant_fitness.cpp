@@ -18,6 +18,10 @@ double face_area(MeshView mesh, const Face& f) {
     return 0.5 * (mesh.positions[f[1]] - a).cross(mesh.positions[f[2]] - a).norm();
 }
 
+Vec3 centroid_of(MeshView mesh, const Face& f) {
+    return (mesh.positions[f[0]] + mesh.positions[f[1]] + mesh.positions[f[2]]) / 3.0;
+}
+
 // The foot's axis: the mean (x, y) of the vertices within root_height of
 // the lowest one.
 Eigen::Vector2d foot_axis(MeshView mesh, double zmin, double root_height) {
@@ -30,16 +34,9 @@ Eigen::Vector2d foot_axis(MeshView mesh, double zmin, double root_height) {
 
 double bending_moment(MeshView mesh, const Eigen::Vector2d& axis) {
     double moment = 0.0;
-    for (const Face& f : mesh.faces) {
-        const Vec3 centroid = (mesh.positions[f[0]] + mesh.positions[f[1]] + mesh.positions[f[2]]) / 3.0;
-        moment += face_area(mesh, f) * (centroid.head<2>() - axis).norm();
-    }
+    for (const Face& f : mesh.faces) moment += face_area(mesh, f) * (centroid_of(mesh, f).head<2>() - axis).norm();
     return moment;
 }
-
-}  // namespace
-
-namespace {
 
 // The rectangular hyperbola: what `area` yields at mean relative irradiance
 // `irradiance` (a leaf's light response).
@@ -59,10 +56,6 @@ struct LeafKeyHash {
         return std::hash<unsigned long long>()(u(k.x) * 73856093ULL ^ u(k.y) * 19349663ULL ^ u(k.z) * 83492791ULL);
     }
 };
-
-Vec3 centroid_of(MeshView mesh, const Face& f) {
-    return (mesh.positions[f[0]] + mesh.positions[f[1]] + mesh.positions[f[2]]) / 3.0;
-}
 
 // Each tip's S_t from per-face yields: a face feeds the nearest tip within reach.
 std::vector<double> shoots_from_yields(MeshView mesh, const std::vector<double>& yields, const std::vector<Vec3>& tips,
@@ -87,33 +80,33 @@ std::vector<double> shoots_from_yields(MeshView mesh, const std::vector<double>&
 
 std::vector<double> face_yields(MeshView mesh, const std::vector<double>& light_per_face, double half_saturation,
                                 double leaf_size) {
-    const double K = half_saturation;
-    std::vector<double> areas(mesh.faces.size()), yields(mesh.faces.size(), 0.0);
+    // Each face's area, and its leaf's area and light: the face's own when
+    // leaf_size is 0, else summed over the faces whose centroids share its cube.
+    std::vector<double> areas(mesh.faces.size());
     for (std::size_t i = 0; i < mesh.faces.size(); ++i) areas[i] = face_area(mesh, mesh.faces[i]);
-    if (!(leaf_size > 0.0)) {  // every face its own leaf
+    std::vector<double> leaf_area = areas, leaf_light = light_per_face;
+    if (leaf_size > 0.0) {
+        struct Leaf {
+            double area = 0.0, light = 0.0;
+        };
+        std::unordered_map<LeafKey, Leaf, LeafKeyHash> leaves;
+        std::vector<const Leaf*> leaf_of(mesh.faces.size(), nullptr);
+        for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
+            if (!(areas[i] > 0.0)) continue;
+            const Vec3 c = centroid_of(mesh, mesh.faces[i]) / leaf_size;
+            // Clamped so that the cast is defined for any finite mesh (cells that far out merge).
+            const auto cell = [](double v) { return static_cast<long long>(std::floor(std::clamp(v, -1e15, 1e15))); };
+            Leaf& leaf = leaves[LeafKey{cell(c.x()), cell(c.y()), cell(c.z())}];  // stays valid as the map grows
+            leaf.area += areas[i], leaf.light += light_per_face[i];
+            leaf_of[i] = &leaf;
+        }
         for (std::size_t i = 0; i < mesh.faces.size(); ++i)
-            if (areas[i] > 0.0 && light_per_face[i] > 0.0)
-                yields[i] = saturating_yield(areas[i], light_per_face[i] / areas[i], K);
-        return yields;
+            if (leaf_of[i] != nullptr) leaf_area[i] = leaf_of[i]->area, leaf_light[i] = leaf_of[i]->light;
     }
-    struct Leaf {
-        double area = 0.0, light = 0.0;
-    };
-    std::unordered_map<LeafKey, Leaf, LeafKeyHash> leaves;
-    std::vector<Leaf*> leaf_of(mesh.faces.size(), nullptr);
-    for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
-        if (!(areas[i] > 0.0)) continue;
-        const Vec3 c = centroid_of(mesh, mesh.faces[i]) / leaf_size;
-        // Clamped so that the cast is defined for any finite mesh (cells that far out merge).
-        const auto cell = [](double v) { return static_cast<long long>(std::floor(std::clamp(v, -1e15, 1e15))); };
-        const LeafKey key{cell(c.x()), cell(c.y()), cell(c.z())};
-        Leaf& leaf = leaves[key];  // references into an unordered_map stay valid as it grows
-        leaf.area += areas[i], leaf.light += light_per_face[i];
-        leaf_of[i] = &leaf;
-    }
+    std::vector<double> yields(mesh.faces.size(), 0.0);
     for (std::size_t i = 0; i < mesh.faces.size(); ++i)
-        if (leaf_of[i] != nullptr && leaf_of[i]->light > 0.0)
-            yields[i] = saturating_yield(areas[i], leaf_of[i]->light / leaf_of[i]->area, K);
+        if (areas[i] > 0.0 && leaf_light[i] > 0.0)
+            yields[i] = saturating_yield(areas[i], leaf_light[i] / leaf_area[i], half_saturation);
     return yields;
 }
 
