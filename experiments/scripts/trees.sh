@@ -3,7 +3,7 @@
 # several seeds, each best's architecture and verdict by the skeleton
 # (experiments/scripts/trees/is_tree.py), the bests drawn side by side; the same
 # without the signals of algorithm.md §5.9 (exposure, diffusion) on the first
-# seed; then configs/tree_map.json (MAP-Elites over limbs x first_fork_height)
+# seed; then configs/tree_map.json (MAP-Elites over trunk_ratio x solidity)
 # on the first seed, its map of elites drawn.
 #
 # usage: experiments/scripts/trees.sh [SEEDS...]     (default 1 2 3; results in out/trees/, OUT=... to change)
