@@ -12,12 +12,16 @@ of the plant). The numbers come from `morphogen score --json`.
 """
 import csv
 import json
+import os
 import subprocess
 import sys
 
+# The build of the checkout this script is in, so that it runs from any directory.
+MORPHOGEN = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "..", "build", "morphogen")
+
 
 def measure(config, mesh):
-    out = subprocess.run(["build/morphogen", "score", "--mesh", mesh, "--config", config, "--json"],
+    out = subprocess.run([MORPHOGEN, "score", "--mesh", mesh, "--config", config, "--json"],
                          check=True, capture_output=True, text=True).stdout
     return json.loads(out)
 
