@@ -2,20 +2,20 @@
 // checkpoint: each as .glb + .obj + .genome.json with species.csv, and
 // optionally the map of elites as a PNG (each occupied cell's plant at its
 // place on the descriptor grid, beside a fitness heatmap). With --pack DIR,
-// a species pack of a MAP-Elites or GA run instead (run/run_pack.hpp).
+// a species pack of a MAP-Elites or GA run instead (run/exports/run_pack.hpp).
 #include "app/commands.hpp"
 #include "app/plant_export_options.hpp"
-#include "base/atomic_file.hpp"
-#include "base/errors.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/base/errors.hpp"
 #include "report/render.hpp"
-#include "run/checkpoint.hpp"
-#include "run/elites_search.hpp"
-#include "run/experiment_config.hpp"
+#include "run/persistence/checkpoint.hpp"
+#include "run/searches/elites_search.hpp"
+#include "run/config/experiment_config.hpp"
 #include "run/growth_problem.hpp"
-#include "run/plant_exports.hpp"
-#include "run/run_directory.hpp"
-#include "run/run_pack.hpp"
-#include "run/run_records.hpp"
+#include "run/exports/plant_exports.hpp"
+#include "run/persistence/run_directory.hpp"
+#include "run/exports/run_pack.hpp"
+#include "run/loop/run_records.hpp"
 
 #include <algorithm>
 #include <cstdio>

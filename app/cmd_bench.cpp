@@ -4,11 +4,11 @@
 // prints the median of each figure (shared machines are noisy: one pass
 // proves little).
 #include "app/commands.hpp"
-#include "app/fma_peak.hpp"
-#include "app/growth_phase_timer.hpp"
-#include "evolution/worker_threads.hpp"
-#include "growth/genome_grower.hpp"
-#include "run/experiment_config.hpp"
+#include "core/base/fma_peak.hpp"
+#include "core/growth/growth_phase_timer.hpp"
+#include "evolution/execution/worker_threads.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "run/config/experiment_config.hpp"
 #include "run/genome_source.hpp"
 
 #include <nlohmann/json.hpp>

@@ -1,16 +1,16 @@
 // `morphogen breed`: breed plants by hand on a local page (docs/breed.md):
 // the session (breed/session.hpp) behind the HTTP server (breed/server.hpp).
 #include "app/commands.hpp"
-#include "base/errors.hpp"
-#include "base/json_text.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/json_text.hpp"
 #include "breed/breed_assets.hpp"
 #include "breed/server.hpp"
 #include "breed/session.hpp"
-#include "growth/network.hpp"
+#include "core/growth/network/network.hpp"
 #include "run/exit_codes.hpp"
-#include "run/experiment_config.hpp"
+#include "run/config/experiment_config.hpp"
 #include "run/genome_source.hpp"
-#include "run/stop_signals.hpp"
+#include "run/loop/stop_signals.hpp"
 
 #include <fcntl.h>
 #include <spawn.h>

@@ -2,14 +2,14 @@
 // runs its search (evolution_run.hpp).
 #include "app/commands.hpp"
 #include "app/resource_options.hpp"
-#include "base/atomic_file.hpp"
+#include "core/base/atomic_file.hpp"
 #include "report/end_of_run.hpp"
-#include "run/evolution_run.hpp"
+#include "run/loop/run_session.hpp"
 #include "run/exit_codes.hpp"
-#include "run/run_records.hpp"
-#include "run/run_search.hpp"
-#include "run/stop_signals.hpp"
-#include "evolution/worker_threads.hpp"
+#include "run/loop/run_records.hpp"
+#include "run/searches/run_search.hpp"
+#include "run/loop/stop_signals.hpp"
+#include "evolution/execution/worker_threads.hpp"
 
 #include <chrono>
 #include <iostream>

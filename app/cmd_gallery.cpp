@@ -2,12 +2,12 @@
 #include "app/commands.hpp"
 #include "fitness/mesh_stats.hpp"
 #include "app/resource_options.hpp"
-#include "base/errors.hpp"
-#include "evolution/worker_threads.hpp"
-#include "growth/genome_grower.hpp"
-#include "io/mesh_io.hpp"
+#include "core/base/errors.hpp"
+#include "evolution/execution/worker_threads.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/io/mesh_io.hpp"
 #include "report/render.hpp"
-#include "run/experiment_config.hpp"
+#include "run/config/experiment_config.hpp"
 #include "run/genome_source.hpp"
 
 #include <omp.h>

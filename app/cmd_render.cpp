@@ -1,7 +1,7 @@
 // `morphogen render MESH... -o SHEET.png [--columns C] [--size PX] [--own-scale]`:
 // draws meshes (OBJ/PLY/OFF/STL) side by side on one PNG contact sheet.
 #include "app/commands.hpp"
-#include "io/mesh_io.hpp"
+#include "core/io/mesh_io.hpp"
 #include "report/render.hpp"
 #include "run/exit_codes.hpp"
 

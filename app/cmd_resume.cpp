@@ -2,17 +2,17 @@
 // it had never stopped.
 #include "app/commands.hpp"
 #include "app/resource_options.hpp"
-#include "base/atomic_file.hpp"
-#include "base/config_reader.hpp"
-#include "base/errors.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/base/config_reader.hpp"
+#include "core/base/errors.hpp"
 #include "report/end_of_run.hpp"
-#include "run/checkpoint_checks.hpp"
-#include "run/config_migration.hpp"
-#include "run/evolution_run.hpp"
+#include "run/persistence/checkpoint_checks.hpp"
+#include "run/config/config_migration.hpp"
+#include "run/loop/run_session.hpp"
 #include "run/exit_codes.hpp"
-#include "run/run_records.hpp"
-#include "run/run_search.hpp"
-#include "run/stop_signals.hpp"
+#include "run/loop/run_records.hpp"
+#include "run/searches/run_search.hpp"
+#include "run/loop/stop_signals.hpp"
 
 #include <filesystem>
 #include <iostream>

@@ -2,13 +2,13 @@
 // from a file or grown from a genome.
 #include "app/commands.hpp"
 #include "app/resource_options.hpp"
-#include "base/config_reader.hpp"
-#include "base/errors.hpp"
+#include "core/base/config_reader.hpp"
+#include "core/base/errors.hpp"
 #include "fitness/architecture_json.hpp"
 #include "fitness/fitness.hpp"
-#include "growth/genome_grower.hpp"
-#include "io/mesh_io.hpp"
-#include "run/experiment_config.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/io/mesh_io.hpp"
+#include "run/config/experiment_config.hpp"
 #include "run/genome_source.hpp"
 
 #include <nlohmann/json.hpp>

@@ -4,10 +4,10 @@
 // a seed mesh that is not usable (the first of these wins over later ones, 2 over all).
 #include "app/commands.hpp"
 #include "app/resource_options.hpp"
-#include "base/errors.hpp"
-#include "growth/seeds.hpp"
+#include "core/base/errors.hpp"
+#include "core/growth/seeds/seeds.hpp"
 #include "run/exit_codes.hpp"
-#include "run/experiment_config.hpp"
+#include "run/config/experiment_config.hpp"
 
 #include <iostream>
 #include <memory>

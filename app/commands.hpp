@@ -2,7 +2,7 @@
 // One function per CLI verb registers its subcommand. When the user picks a
 // subcommand, its callback stores the work to do in `selected`; main() runs it
 // and maps exceptions to exit codes (exit_codes.hpp).
-#include "run/evolution_run.hpp"
+#include "run/loop/run_session.hpp"
 
 #include <CLI/CLI.hpp>
 

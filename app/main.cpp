@@ -4,13 +4,13 @@
 // rank 0 runs the command, the other ranks score its genomes (cluster/).
 #include "app/commands.hpp"
 #include "app/numeric_options.hpp"
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 #include "cluster/launch.hpp"
 #include "cluster/protocol.hpp"
 #include "cluster/remote_evaluator.hpp"
 #include "cluster/worker.hpp"
 #include "cluster/world.hpp"
-#include "run/evolution_run.hpp"
+#include "run/loop/run_session.hpp"
 #include "run/exit_codes.hpp"
 
 #include <CLI/CLI.hpp>

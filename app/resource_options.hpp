@@ -6,7 +6,7 @@
 //   --no-limits             refuse nothing
 // A machine's size is not part of the experiment, so these are options and not
 // config keys (resolved configs and checkpoints do not record them).
-#include "run/resource_estimate.hpp"
+#include "run/limits/resource_estimate.hpp"
 
 #include <CLI/CLI.hpp>
 

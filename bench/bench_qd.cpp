@@ -14,12 +14,12 @@
 // upper bound on an emitter's own cost per birth).
 #include "bench/pyribs_cma.hpp"
 #include "bench/sphere_projection.hpp"
-#include "evolution/cma_emitter.hpp"
-#include "evolution/gaussian_emitter.hpp"
-#include "evolution/iso_line_emitter.hpp"
-#include "evolution/map_elites.hpp"
-#include "evolution/sep_cma.hpp"
-#include "evolution/thread_evaluator.hpp"
+#include "evolution/emitters/cma/cma_emitter.hpp"
+#include "evolution/emitters/gaussian_emitter.hpp"
+#include "evolution/emitters/iso_line_emitter.hpp"
+#include "evolution/schedulers/map_elites.hpp"
+#include "evolution/emitters/cma/sep_cma.hpp"
+#include "evolution/execution/thread_evaluator.hpp"
 
 #include <CLI/CLI.hpp>
 #include <unistd.h>

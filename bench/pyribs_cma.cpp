@@ -1,7 +1,7 @@
 #include "bench/pyribs_cma.hpp"
 
-#include "evolution/cma_rates.hpp"
-#include "evolution/eigen_views.hpp"
+#include "evolution/emitters/cma/cma_rates.hpp"
+#include "evolution/emitters/cma/eigen_views.hpp"
 
 
 #include <algorithm>

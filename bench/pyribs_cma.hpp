@@ -3,7 +3,7 @@
 // CMA-MAE paper's benchmark code vendors), for morphogen-bench-qd's
 // reproduction of the published sphere figures only
 // (experiments/2026-11-25-every-emitter-three-grids.md and the sphere study).
-// It differs from the textbook update (evolution/full_cma.hpp) in six ways:
+// It differs from the textbook update (evolution/emitters/cma/full_cma.hpp) in six ways:
 // the rank-one term is weighted by c1^2 instead of c1 (pyribs applies c1
 // twice); p_c accumulates m' - m without dividing by sigma (so that term is
 // also sigma^2 times the textbook's); steps are not clipped;
@@ -12,7 +12,7 @@
 // sample and to whiten) are recomputed only once lambda (u - decomposed_at)
 // > n lambda / (2 n^2 (c1 + cmu)) children have passed since the last time
 // (every 3 updates at n = 100, lambda = 36), not after every update.
-#include "evolution/full_cma.hpp"
+#include "evolution/emitters/cma/full_cma.hpp"
 
 #include <cstdint>
 #include <span>

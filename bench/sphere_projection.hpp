@@ -9,7 +9,7 @@
 //   descriptors = (sum of clip(x_i) over the first n/2 parameters,
 //                  sum over the rest)
 // The papers' archive is 100 x 100 over [-5.12 n/2, 5.12 n/2]^2.
-#include "evolution/archive.hpp"
+#include "evolution/archives/archive.hpp"
 #include "evolution/problem.hpp"
 
 #include <vector>

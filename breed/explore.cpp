@@ -1,10 +1,10 @@
 #include "breed/explore.hpp"
 
-#include "evolution/emitter_registry.hpp"
-#include "evolution/emitters.hpp"
-#include "evolution/pipeline.hpp"
+#include "evolution/emitters/emitter_registry.hpp"
+#include "evolution/emitters/emitters.hpp"
+#include "evolution/execution/pipeline.hpp"
 #include "evolution/problem.hpp"
-#include "growth/network.hpp"
+#include "core/growth/network/network.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,6 +1,6 @@
 #pragma once
 // "Explore around this one" (docs/breed.md): a short MAP-Elites search
-// (evolution/map_elites.hpp, docs/algorithm.md §9) seeded with the chosen
+// (evolution/schedulers/map_elites.hpp, docs/algorithm.md §9) seeded with the chosen
 // plants, whose most different good elites become the next grid.
 //
 // The archive starts holding only the seeds and the births start after
@@ -16,9 +16,9 @@
 // picked so far (ties: the lower cell). Fewer good elites than cells: the
 // rest by fitness.
 #include "breed/plant_growth.hpp"
-#include "evolution/archive.hpp"
+#include "evolution/archives/archive.hpp"
 #include "evolution/individual.hpp"
-#include "evolution/map_elites.hpp"
+#include "evolution/schedulers/map_elites.hpp"
 
 #include <atomic>
 #include <cstdint>

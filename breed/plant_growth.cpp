@@ -2,8 +2,8 @@
 
 #include "fitness/measures.hpp"
 #include "fitness/mesh_stats.hpp"
-#include "growth/network.hpp"
-#include "io/mesh_io.hpp"
+#include "core/growth/network/network.hpp"
+#include "core/io/mesh_io.hpp"
 
 #include <algorithm>
 #include <atomic>

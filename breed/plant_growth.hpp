@@ -5,9 +5,9 @@
 // genome and the config, so a replay grows the same bytes.
 #include "fitness/descriptors.hpp"
 #include "evolution/individual.hpp"
-#include "growth/genome_grower.hpp"
+#include "core/growth/genome_grower.hpp"
 #include "report/render.hpp"
-#include "run/experiment_config.hpp"
+#include "run/config/experiment_config.hpp"
 
 #include <filesystem>
 #include <map>

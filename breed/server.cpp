@@ -1,8 +1,8 @@
 #include "breed/server.hpp"
 
-#include "base/atomic_file.hpp"
-#include "base/errors.hpp"
-#include "base/json_text.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/json_text.hpp"
 #include "breed/breed_assets.hpp"
 #include "breed/breed_errors.hpp"
 #include "engine/plant_wind.hpp"

@@ -1,16 +1,16 @@
 #include "breed/session.hpp"
 
-#include "base/append_file.hpp"
-#include "base/atomic_file.hpp"
-#include "base/errors.hpp"
-#include "base/json_text.hpp"
+#include "core/base/append_file.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/json_text.hpp"
 #include "breed/breed_errors.hpp"
 #include "engine/plant_record.hpp"
 #include "evolution/operators.hpp"
 #include "evolution/rng.hpp"
-#include "growth/genome_io.hpp"
-#include "growth/network.hpp"
-#include "run/plant_exports.hpp"
+#include "core/growth/genome_io.hpp"
+#include "core/growth/network/network.hpp"
+#include "run/exports/plant_exports.hpp"
 
 #include <algorithm>
 #include <charconv>

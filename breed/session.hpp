@@ -17,7 +17,7 @@
 #include "breed/explore.hpp"
 #include "breed/plant_growth.hpp"
 #include "engine/plant_export.hpp"
-#include "run/experiment_config.hpp"
+#include "run/config/experiment_config.hpp"
 
 #include <nlohmann/json.hpp>
 

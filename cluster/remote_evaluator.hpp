@@ -1,5 +1,5 @@
 #pragma once
-// Rank 0's side of a session (GenomeEvaluator, evolution/genome_evaluator.hpp):
+// Rank 0's side of a session (GenomeEvaluator, evolution/execution/genome_evaluator.hpp):
 // the workers (ranks 1..N-1) grow and score genomes while rank 0 keeps the
 // search state and writes every file. Rank 0 does not evaluate itself: it
 // must answer a worker that finishes at once (a genome can cost ten times
@@ -11,9 +11,9 @@
 // workers hold wait on rank 0 in submission order. Which process scores which
 // genome never changes a result.
 #include "cluster/world.hpp"
-#include "evolution/genome_evaluator.hpp"
-#include "run/evolution_run.hpp"
-#include "run/experiment_config.hpp"
+#include "evolution/execution/genome_evaluator.hpp"
+#include "run/loop/run_session.hpp"
+#include "run/config/experiment_config.hpp"
 
 #include <deque>
 #include <filesystem>

@@ -1,10 +1,10 @@
 #include "cluster/worker.hpp"
 
 #include "cluster/protocol.hpp"
-#include "evolution/thread_evaluator.hpp"
-#include "run/experiment_config.hpp"
+#include "evolution/execution/thread_evaluator.hpp"
+#include "run/config/experiment_config.hpp"
 #include "run/growth_problem.hpp"
-#include "evolution/worker_threads.hpp"
+#include "evolution/execution/worker_threads.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -3,7 +3,7 @@
 // (plant_wind.hpp). Growth appends vertices in birth order and never removes
 // one, so the vertex count after each step, seen through the grower's
 // per-step observer, dates every vertex without changing growth.
-#include "growth/growth.hpp"
+#include "core/growth/growth.hpp"
 
 #include <vector>
 

@@ -2,7 +2,7 @@
 // plant_lods.hpp); CGAL stays in this file.
 #include "engine/plant_lods.hpp"
 
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 #include "engine/cgal_lod_distance_cost.hpp"
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>

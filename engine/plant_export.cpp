@@ -1,11 +1,11 @@
 #include "engine/plant_export.hpp"
 
-#include "base/atomic_file.hpp"
-#include "base/errors.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/base/errors.hpp"
 #include "engine/plant_frame.hpp"
 #include "engine/plant_lods.hpp"
 #include "engine/plant_wind.hpp"
-#include "io/plant_glb.hpp"
+#include "core/io/plant_glb.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 // named plant_<id>, its record in extras (plant_record.hpp).
 #include "engine/plant_record.hpp"
 #include "engine/plant_wind.hpp"
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -78,7 +78,7 @@ std::string plant_glb_bytes(const EnginePlant& plant, const std::string& source)
 // `source` when it cannot be encoded.
 std::string plant_glb_bytes(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options,
                             const std::string& source);
-// Writes them atomically to `out` (base/atomic_file.hpp).
+// Writes them atomically to `out` (core/base/atomic_file.hpp).
 void write_plant_glb(const std::filesystem::path& out, const GrownPlant& plant, const PlantRecord& record,
                      const PlantExportOptions& options);
 

@@ -1,6 +1,6 @@
 #include "engine/plant_frame.hpp"
 
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -2,7 +2,7 @@
 // Where a game engine expects a plant: its origin at the centre of its foot,
 // the lowest point at height 0, and one unit a metre (docs/file-formats.md,
 // "Engine-ready GLB"). Axes stay ours (Z-up); the GLB writer turns them Y-up.
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <optional>
 

@@ -8,7 +8,7 @@
 // triangle folds over. Each level keeps the mesh closed
 // and manifold (an edge collapse on CGAL's Surface_mesh keeps the link
 // condition).
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <span>
 #include <vector>

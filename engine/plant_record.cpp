@@ -1,6 +1,6 @@
 #include "engine/plant_record.hpp"
 
-#include "base/fnv_hash.hpp"
+#include "core/base/fnv_hash.hpp"
 
 #include <bit>
 #include <cstdio>

@@ -2,7 +2,7 @@
 #include "engine/plant_scatter.hpp"
 
 #include "engine/plant_wind.hpp"
-#include "io/scatter_glb.hpp"
+#include "core/io/scatter_glb.hpp"
 
 #include <algorithm>
 #include <cmath>

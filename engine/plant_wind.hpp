@@ -22,8 +22,8 @@
 //          UV channels 0 and 1 in Unity, Unreal and Godot (UV, UV2)
 //   godot  _CUSTOM0 = (bend, flutter, phase, stiffness): Godot's CUSTOM0
 //          in builds with godotengine/godot#120040
-#include "io/plant_glb.hpp"
-#include "mesh/mesh.hpp"
+#include "core/io/plant_glb.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <optional>
 #include <span>

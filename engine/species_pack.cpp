@@ -1,8 +1,8 @@
 // The species pack (see species_pack.hpp).
 #include "engine/species_pack.hpp"
 
-#include "base/atomic_file.hpp"
-#include "base/errors.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/base/errors.hpp"
 #include "engine/plant_scatter.hpp"
 
 #include <algorithm>

@@ -1,9 +1,9 @@
 #pragma once
 // The `evolution` config section (docs/config.md): which search runs and the
 // parameters of the steady-state GA, read beside their struct with the
-// ObjectReader every section uses (base/config_reader.hpp).
-#include "base/config_reader.hpp"
-#include "evolution/ga_params.hpp"
+// ObjectReader every section uses (core/base/config_reader.hpp).
+#include "core/base/config_reader.hpp"
+#include "evolution/ga/ga_params.hpp"
 
 namespace morphogen {
 

@@ -4,7 +4,7 @@
 // (population snapshot, parameters, seed, birth index). Variation and the
 // birth itself (conceive_birth) are shared with MAP-Elites (§9.4), which only
 // picks parents differently.
-#include "evolution/ga_params.hpp"
+#include "evolution/ga/ga_params.hpp"
 #include "evolution/individual.hpp"
 #include "evolution/rng.hpp"
 

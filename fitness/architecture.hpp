@@ -26,7 +26,7 @@
 //   one direction than in the other, after the welding of skeleton.hpp) or
 //   a hull of no volume.
 #include "fitness/skeleton.hpp"
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <vector>
 

@@ -6,7 +6,7 @@
 // ((i+0.5)*cell, (j+0.5)*cell) exceeds `height`. A centre on a triangle's edge
 // or vertex is inside it (exact predicates decide); triangles whose
 // xy-projection has zero area are skipped. Score = counted cells x cell^2.
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <cstdint>
 #include <utility>
@@ -27,7 +27,7 @@ using CellIndex = std::pair<std::int64_t, std::int64_t>;  // (i, j)
 
 // The most grid cells one evaluation rasterises (one byte each). A config
 // whose plants could need more is refused before a run
-// (run/resource_estimate.hpp), unless limits are lifted.
+// (run/limits/resource_estimate.hpp), unless limits are lifted.
 inline constexpr std::int64_t canopy_max_cells = std::int64_t{1} << 28;
 
 // The score, by z-buffer rasterisation: only triangles whose highest vertex is

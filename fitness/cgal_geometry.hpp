@@ -3,7 +3,7 @@
 // compiles slowly, so it is included only by cgal_ray_caster.cpp and
 // cgal_self_intersection.cpp). Exact predicates, inexact constructions
 // (CGAL::Exact_predicates_inexact_constructions_kernel).
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <memory>
 #include <optional>

@@ -2,7 +2,7 @@
 // The volume of the convex hull of points (CGAL's convex_hull_3 with exact
 // predicates, in cgal_convex_hull.cpp). Thread-safe and reproducible: the
 // volume is summed exactly, so it does not depend on CGAL's face order.
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <span>
 

@@ -1,6 +1,6 @@
 #include "fitness/descriptors.hpp"
 
-#include "base/config_reader.hpp"
+#include "core/base/config_reader.hpp"
 #include "fitness/architecture.hpp"
 #include "fitness/measures.hpp"
 #include "fitness/tree_sections.hpp"

@@ -6,7 +6,7 @@
 // degenerate mesh (e.g. slenderness of a zero footprint); a DescriptorSet
 // refuses such a value, so descriptors that reach a search are finite.
 #include "fitness/canopy.hpp"
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <span>
 #include <string>

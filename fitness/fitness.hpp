@@ -5,9 +5,9 @@
 // non-finite values into an invalid outcome, applies
 // `reject_self_intersecting`, guards functions that are not thread-safe, and
 // counts evaluations. CGAL never appears in this header.
-#include "base/config_reader.hpp"
+#include "core/base/config_reader.hpp"
 #include "fitness/canopy.hpp"
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <nlohmann/json.hpp>
 

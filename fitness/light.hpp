@@ -15,7 +15,7 @@
 // nothing (the neighbour shades the plant). Height pays only under such
 // competition (Givnish 1982, the height-growth game); alone, a plant lit
 // from the sides does as well low and broad.
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <vector>
 
@@ -32,7 +32,7 @@ struct LightParams {
 };
 
 // The most rays one sun casts in one evaluation. A config whose plants could
-// need more is refused before a run (run/resource_estimate.hpp), unless
+// need more is refused before a run (run/limits/resource_estimate.hpp), unless
 // limits are lifted.
 inline constexpr double light_max_rays_per_sun = double(1 << 26);
 

@@ -1,7 +1,7 @@
 #pragma once
 // Plain geometric measures of a triangle mesh, usable as fitness terms and
 // metrics. None needs the mesh to be closed except volume.
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <span>
 

@@ -1,6 +1,6 @@
 #pragma once
 // Simple shape numbers reported by grow and gallery.
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 namespace morphogen {
 

@@ -33,7 +33,7 @@
 // lowest vertex is above root_height floats, and scores 0.
 #include "fitness/architecture.hpp"
 #include "fitness/light.hpp"
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 namespace morphogen {
 

@@ -26,7 +26,7 @@
 //
 // Thread-safe; O((V + F) log V) plus the clipped pieces (about 1-3 per
 // triangle at the default band width).
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <vector>
 

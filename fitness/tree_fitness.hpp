@@ -14,7 +14,7 @@
 // trunk or more loops than a tree needs; light and cost keep the pressure on.
 // Above the target, a stem 10 % thinner is worth trunk_power × 10 % more light.
 #include "fitness/light.hpp"
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 namespace morphogen {
 

@@ -17,7 +17,7 @@
 //   has >= 3 (branches).
 // Vertices with equal coordinates are merged first, and triangles left with
 // a repeated vertex dropped, so files that split vertices still connect.
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 namespace morphogen {
 

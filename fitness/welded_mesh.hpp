@@ -3,7 +3,7 @@
 // (files such as STL repeat a vertex in every triangle), triangles left with
 // a repeated vertex dropped, and only the vertices of the remaining
 // triangles kept. Thread-safe; O(V log V + F).
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 namespace morphogen {
 

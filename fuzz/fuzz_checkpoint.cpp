@@ -1,5 +1,5 @@
 // Fuzz target "checkpoint": the bytes as checkpoint.json, read by
-// run/checkpoint.hpp load_checkpoint (as `resume` reads it).
+// run/persistence/checkpoint.hpp load_checkpoint (as `resume` reads it).
 //
 // Nearly every mutation breaks the content hash, which stops the reader early.
 // So when the first line is JSON holding a "content", that content is also
@@ -9,7 +9,7 @@
 // the content checks.
 #include "fuzz/fuzz_target.hpp"
 #include "fuzz/path_readers.hpp"
-#include "run/checkpoint.hpp"
+#include "run/persistence/checkpoint.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -1,10 +1,10 @@
 // Fuzz target "config": the bytes as an experiment config, read the way
-// `morphogen validate` reads one (base/config_reader.hpp parse_json_text, then
-// run/experiment_config.hpp read_experiment_config, then the seed check).
-#include "base/config_reader.hpp"
+// `morphogen validate` reads one (core/base/config_reader.hpp parse_json_text, then
+// run/config/experiment_config.hpp read_experiment_config, then the seed check).
+#include "core/base/config_reader.hpp"
 #include "fuzz/fuzz_target.hpp"
-#include "growth/seeds.hpp"
-#include "run/experiment_config.hpp"
+#include "core/growth/seeds/seeds.hpp"
+#include "run/config/experiment_config.hpp"
 
 namespace morphogen::fuzz {
 std::string input_from_file(const std::string&, std::string bytes) { return bytes; }

@@ -1,8 +1,8 @@
-// Fuzz target "genome": the bytes as a genome file (growth/genome_io.hpp), read
+// Fuzz target "genome": the bytes as a genome file (core/growth/genome_io.hpp), read
 // the way load_genome reads one, but from memory.
-#include "base/config_reader.hpp"
+#include "core/base/config_reader.hpp"
 #include "fuzz/fuzz_target.hpp"
-#include "growth/genome_io.hpp"
+#include "core/growth/genome_io.hpp"
 
 #include <bit>
 #include <cstdint>

@@ -1,5 +1,5 @@
 // Fuzz target "mesh": the bytes as a mesh file, read as `score --mesh` and a
-// seed file are read: io/mesh_io.hpp read_mesh, then TriMesh::from_arrays
+// seed file are read: core/io/mesh_io.hpp read_mesh, then TriMesh::from_arrays
 // (the topology checks) and the seed's growth directions.
 //
 // The first byte picks the format, the rest is the file: 'o' OBJ, 'p' PLY,
@@ -8,8 +8,8 @@
 // scripts/fuzz.sh prefix the byte their extension names (input_from_file).
 #include "fuzz/fuzz_target.hpp"
 #include "fuzz/path_readers.hpp"
-#include "growth/seeds.hpp"
-#include "mesh/mesh.hpp"
+#include "core/growth/seeds/seeds.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <algorithm>
 #include <cctype>

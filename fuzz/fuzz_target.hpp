@@ -3,14 +3,14 @@
 //
 // A target feeds its bytes to one reader. The only accepted outcomes are a
 // normal return and morphogen's documented failures (morphogen::Error and its
-// subclasses, base/errors.hpp). Anything else is a finding: another exception
+// subclasses, core/base/errors.hpp). Anything else is a finding: another exception
 // (reported with its type and message, then abort()), a crash, a sanitizer
 // report, or a hang (libFuzzer's -timeout; the corpus replay's alarm).
 //
 // The same target sources are linked two ways: with libFuzzer (clang, build-fuzz/,
 // MORPHOGEN_FUZZ=ON) and with replay_main.cpp (any compiler, the normal build),
 // which calls LLVMFuzzerTestOneInput on every file of tests/corpus/<target>/.
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 
 #include <cstddef>
 #include <cstdint>

@@ -1,11 +1,11 @@
 #pragma once
 // How fuzz targets hand bytes to readers: meshes go to the in-memory
-// parse_mesh (io/mesh_io.hpp, the same parser read_mesh uses); the
-// checkpoint reader takes a path (run/checkpoint.hpp load_checkpoint), so its
+// parse_mesh (core/io/mesh_io.hpp, the same parser read_mesh uses); the
+// checkpoint reader takes a path (run/persistence/checkpoint.hpp load_checkpoint), so its
 // bytes are written to a per-process scratch file in /dev/shm first.
-#include "io/mesh_io.hpp"
-#include "mesh/mesh.hpp"
-#include "run/checkpoint.hpp"
+#include "core/io/mesh_io.hpp"
+#include "core/mesh/mesh.hpp"
+#include "run/persistence/checkpoint.hpp"
 
 #include <string_view>
 

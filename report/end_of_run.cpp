@@ -2,7 +2,7 @@
 
 #include "report/report.hpp"
 #include "run/exit_codes.hpp"
-#include "run/run_directory.hpp"
+#include "run/persistence/run_directory.hpp"
 
 #include <iostream>
 #include <system_error>

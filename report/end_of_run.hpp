@@ -1,7 +1,7 @@
 #pragma once
 // What `evolve` and `resume` do once their checks are done: run the session,
 // then write the report of a complete run.
-#include "run/evolution_run.hpp"
+#include "run/loop/run_session.hpp"
 #include "run/growth_problem.hpp"
 
 #include <filesystem>

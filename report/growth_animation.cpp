@@ -1,10 +1,10 @@
 // The growth as frames, an animated glTF and an OBJ sequence (see growth_animation.hpp).
 #include "report/growth_animation.hpp"
 
-#include "base/atomic_file.hpp"
-#include "base/errors.hpp"
-#include "io/gltf_mesh.hpp"
-#include "io/mesh_io.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/base/errors.hpp"
+#include "core/io/gltf_mesh.hpp"
+#include "core/io/mesh_io.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -5,10 +5,10 @@
 // each frame is a mesh and node of its own under one root node, and one
 // animation shows them in turn with STEP-interpolated scale keys, (1,1,1) for
 // the frame shown and (0,0,0) for the others (docs/file-formats.md).
-#include "growth/genome_grower.hpp"
-#include "growth/network.hpp"
-#include "mesh/mesh.hpp"
-#include "run/experiment_config.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/growth/network/network.hpp"
+#include "core/mesh/mesh.hpp"
+#include "run/config/experiment_config.hpp"
 
 #include <filesystem>
 #include <string>
@@ -61,7 +61,7 @@ GrowthFrames record_growth_frames(const ExperimentConfig& config, const Genome& 
 // IoError naming `source` if the file would pass kMaxMeshFileBytes.
 std::string encode_growth_animation_glb(const GrowthFrames& frames, double seconds_per_frame,
                                         const std::string& source = "animation");
-// Writes those bytes atomically (base/atomic_file.hpp); IoError naming `out`.
+// Writes those bytes atomically (core/base/atomic_file.hpp); IoError naming `out`.
 void write_growth_animation(const std::filesystem::path& out, const GrowthFrames& frames, double seconds_per_frame);
 
 // Writes frame i as dir/frame_NNNN.obj (4 digits, i from 0), creating `dir`;

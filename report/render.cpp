@@ -1,7 +1,7 @@
 // Software rasteriser and contact sheets (see render.hpp).
 #include "report/render.hpp"
 
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 
 #include <Eigen/Geometry>
 

@@ -10,7 +10,7 @@
 // view looking along +y). Meshes are Z-up. Every mesh is centred on its cell
 // by the centre of its xy bounding box; z is kept, so the ground (z = 0) of
 // every cell lies on the same image row.
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <cstdint>
 #include <span>

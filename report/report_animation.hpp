@@ -1,8 +1,8 @@
 #pragma once
 // The report's growth animation of a genome: the animated glTF of
 // growth_animation.hpp (one node per frame, STEP scale keys), as bytes.
-#include "growth/network.hpp"
-#include "run/experiment_config.hpp"
+#include "core/growth/network/network.hpp"
+#include "run/config/experiment_config.hpp"
 
 #include <optional>
 #include <string>

@@ -1,7 +1,7 @@
 #include "report/report_data.hpp"
 
-#include "base/atomic_file.hpp"
-#include "base/errors.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/base/errors.hpp"
 
 #include <algorithm>
 #include <charconv>

@@ -1,10 +1,10 @@
 #include "report/report_plants.hpp"
 
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 #include "engine/plant_export.hpp"
 #include "engine/plant_lods.hpp"
-#include "io/mesh_io.hpp"
-#include "run/plant_exports.hpp"
+#include "core/io/mesh_io.hpp"
+#include "run/exports/plant_exports.hpp"
 
 namespace morphogen {
 

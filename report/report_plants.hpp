@@ -4,8 +4,8 @@
 // with wind data and up to kReportLods levels of detail, so the viewer can
 // sway them and show each level (docs/report.md, "3-D viewer").
 #include "evolution/individual.hpp"
-#include "growth/genome_grower.hpp"
-#include "run/experiment_config.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "run/config/experiment_config.hpp"
 
 #include <optional>
 #include <string>

@@ -1,8 +1,8 @@
 #include "run/genome_source.hpp"
 
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 #include "evolution/rng.hpp"
-#include "growth/genome_io.hpp"
+#include "core/growth/genome_io.hpp"
 
 namespace morphogen {
 

@@ -1,6 +1,6 @@
 #pragma once
 // Where a command's genome comes from: `--random SEED` or `--genome FILE`.
-#include "growth/network.hpp"
+#include "core/growth/network/network.hpp"
 
 #include <cstdint>
 #include <string>

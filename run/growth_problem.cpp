@@ -1,9 +1,9 @@
 #include "run/growth_problem.hpp"
 
-#include "base/atomic_file.hpp"
-#include "growth/genome_io.hpp"
-#include "growth/network.hpp"
-#include "io/mesh_io.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/growth/genome_io.hpp"
+#include "core/growth/network/network.hpp"
+#include "core/io/mesh_io.hpp"
 
 #include <cstring>
 #include <iterator>

@@ -4,8 +4,8 @@
 // place where evolution meets meshes.
 #include "evolution/problem.hpp"
 #include "fitness/descriptors.hpp"
-#include "growth/genome_grower.hpp"
-#include "run/experiment_config.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "run/config/experiment_config.hpp"
 
 #include <filesystem>
 #include <memory>

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Fits the rational 2^y of the network kernel's sigmoid (growth/network_kernel.cpp).
+"""Fits the rational 2^y of the network kernel's sigmoid (core/growth/network/network_kernel.cpp).
 
 usage: experiments/scripts/fit_sigmoid.py        (needs mpmath: Debian's python3-mpmath)
 

@@ -6,7 +6,7 @@ Every run written with a `descriptors` list (MAP-Elites always; a GA when its
 config declares them) records each birth's descriptor values in lineage.csv
 (docs/evolution.md). This bins every valid birth into the grid of a config's
 `descriptors` (bin = floor((x - min) / (max - min) * bins), clamped to the
-edge cells, as evolution/archive.cpp does) and keeps the best fitness per
+edge cells, as evolution/archives/archive.cpp does) and keeps the best fitness per
 cell: what a MAP-Elites archive over all of the run's births would hold.
 
   qd_bin.py table --grid-from CONFIG [--budget B] [--qd-offset O] METHOD/SEED=RUN_DIR...

@@ -1,6 +1,6 @@
 #include "tests/app/evolve_test_support.hpp"
 
-#include "run/checkpoint.hpp"
+#include "run/persistence/checkpoint.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
 #pragma once
 // The search states a RunState holds, for tests that build or read one.
-#include "run/elites_search.hpp"
-#include "run/ga_search.hpp"
-#include "run/run_state.hpp"
+#include "run/searches/elites_search.hpp"
+#include "run/searches/ga_search.hpp"
+#include "run/loop/run_state.hpp"
 
 #include <memory>
 #include <stdexcept>

@@ -1,16 +1,16 @@
-// Checkpoint format 2 (run/checkpoint.hpp): genomes as exact little-endian
+// Checkpoint format 2 (run/persistence/checkpoint.hpp): genomes as exact little-endian
 // doubles after the JSON header line. Exact bits, format-1 files still loading
 // and resuming, refusal of every damaged byte of the binary part and of
 // contradicting genome references, and the size of a large archive. A hidden
 // benchmark ("[.][bench]") measures save and load times for docs/performance.md.
-#include "base/atomic_file.hpp"
-#include "base/errors.hpp"
-#include "evolution/ga_state_json.hpp"
-#include "evolution/map_elites_state_json.hpp"
-#include "growth/network.hpp"
-#include "run/checkpoint.hpp"
-#include "run/experiment_config.hpp"
-#include "run/run_records.hpp"
+#include "core/base/atomic_file.hpp"
+#include "core/base/errors.hpp"
+#include "evolution/ga/ga_state_json.hpp"
+#include "evolution/schedulers/map_elites_state_json.hpp"
+#include "core/growth/network/network.hpp"
+#include "run/persistence/checkpoint.hpp"
+#include "run/config/experiment_config.hpp"
+#include "run/loop/run_records.hpp"
 #include "tests/app/evolve_test_support.hpp"
 #include "tests/app/search_states.hpp"
 

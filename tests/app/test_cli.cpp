@@ -1,6 +1,6 @@
 // End-to-end tests of grow, gallery and bench through the real executable.
-#include "io/mesh_io.hpp"
-#include "mesh/mesh.hpp"
+#include "core/io/mesh_io.hpp"
+#include "core/mesh/mesh.hpp"
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,9 +1,9 @@
-// Config format versions (run/config_migration.hpp): the reader records
+// Config format versions (run/config/config_migration.hpp): the reader records
 // format_version and refuses a later one; a format-1 config (morphogen 0.1.0's
 // config.json) is migrated with the defaults 0.1.0 left out written out.
-#include "base/errors.hpp"
-#include "run/config_migration.hpp"
-#include "run/experiment_config.hpp"
+#include "core/base/errors.hpp"
+#include "run/config/config_migration.hpp"
+#include "run/config/experiment_config.hpp"
 #include "tests/support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>

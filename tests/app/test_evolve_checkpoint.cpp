@@ -1,10 +1,10 @@
 // Checkpoint files: exact round trip, and refusal of every truncation and
 // every single changed byte, of other versions and formats, and of contents
 // that contradict themselves or lineage.csv though their hash matches.
-#include "base/errors.hpp"
-#include "run/checkpoint.hpp"
-#include "run/checkpoint_checks.hpp"
-#include "base/fnv_hash.hpp"
+#include "core/base/errors.hpp"
+#include "run/persistence/checkpoint.hpp"
+#include "run/persistence/checkpoint_checks.hpp"
+#include "core/base/fnv_hash.hpp"
 #include "tests/app/evolve_test_support.hpp"
 #include "tests/app/search_states.hpp"
 

@@ -2,10 +2,10 @@
 // suggestions, invalid JSON with line and column, overrides, and
 // configs/schema.json kept in step with the reader (validation of the
 // shipped configs, defaults and ranges compared key by key).
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 #include "fitness/descriptors.hpp"
-#include "run/experiment_config.hpp"
-#include "run/resource_estimate.hpp"
+#include "run/config/experiment_config.hpp"
+#include "run/limits/resource_estimate.hpp"
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>

@@ -2,9 +2,9 @@
 // "map_elites"): the same bytes for any thread count and after a resume,
 // archive.csv against lineage.csv and the checkpoint, damaged archives
 // refused, and CVT centroids carried by the checkpoint.
-#include "run/checkpoint.hpp"
-#include "base/fnv_hash.hpp"
-#include "run/run_records.hpp"
+#include "run/persistence/checkpoint.hpp"
+#include "core/base/fnv_hash.hpp"
+#include "run/loop/run_records.hpp"
 #include "tests/app/evolve_test_support.hpp"
 #include "tests/app/search_states.hpp"
 #include "tests/support/sanitizers.hpp"

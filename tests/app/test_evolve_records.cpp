@@ -1,8 +1,8 @@
 // history.csv / lineage.csv rows and the append-only files behind them.
-#include "base/errors.hpp"
-#include "base/append_file.hpp"
+#include "core/base/errors.hpp"
+#include "core/base/append_file.hpp"
 #include "run/growth_problem.hpp"
-#include "run/run_records.hpp"
+#include "run/loop/run_records.hpp"
 #include "tests/app/evolve_test_support.hpp"
 #include "tests/support/temp_dir.hpp"
 

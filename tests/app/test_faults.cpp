@@ -4,8 +4,8 @@
 // best/, leftovers of a crash. Every stopped run must end, after `resume` (or
 // `evolve` again where it stopped before its first checkpoint), with exactly
 // the files of an uninterrupted run.
-#include "base/atomic_file.hpp"
-#include "run/checkpoint.hpp"
+#include "core/base/atomic_file.hpp"
+#include "run/persistence/checkpoint.hpp"
 #include "tests/app/evolve_test_support.hpp"
 #include "tests/support/sanitizers.hpp"
 

@@ -2,8 +2,8 @@
 // (exit 3), checkpoints (exit 5, left byte-identical). Every refusal is one
 // line naming the file. Also replays every file of tests/corpus/{config,
 // genome,checkpoint}: each must be refused with its documented exit code.
-#include "base/errors.hpp"
-#include "run/checkpoint.hpp"
+#include "core/base/errors.hpp"
+#include "run/persistence/checkpoint.hpp"
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>

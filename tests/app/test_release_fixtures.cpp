@@ -2,10 +2,10 @@
 // made as its README says): their configs and checkpoints are migrated on
 // reading, a resume continues them to the same bytes as 0.1.0's own
 // uninterrupted run, and files of a later version are refused with a reason.
-#include "run/checkpoint.hpp"
-#include "run/config_migration.hpp"
-#include "run/experiment_config.hpp"
-#include "base/fnv_hash.hpp"
+#include "run/persistence/checkpoint.hpp"
+#include "run/config/config_migration.hpp"
+#include "run/config/experiment_config.hpp"
+#include "core/base/fnv_hash.hpp"
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,10 +1,10 @@
-// Resource limits (run/resource_estimate.hpp): the estimates against measured
+// Resource limits (run/limits/resource_estimate.hpp): the estimates against measured
 // facts of real growths and runs, the refusals, and the options that lift them.
-#include "growth/genome_grower.hpp"
-#include "growth/network.hpp"
-#include "run/experiment_config.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/growth/network/network.hpp"
+#include "run/config/experiment_config.hpp"
 #include "run/genome_source.hpp"
-#include "run/resource_estimate.hpp"
+#include "run/limits/resource_estimate.hpp"
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>

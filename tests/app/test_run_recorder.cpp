@@ -1,10 +1,10 @@
-// The recorder alone (run/run_recorder.hpp): a session's pipeline driven by
+// The recorder alone (run/loop/run_recorder.hpp): a session's pipeline driven by
 // hand to a generation that is neither the last nor due for a checkpoint.
-#include "evolution/thread_evaluator.hpp"
-#include "run/checkpoint.hpp"
-#include "run/ga_search.hpp"
-#include "run/progress.hpp"
-#include "run/run_recorder.hpp"
+#include "evolution/execution/thread_evaluator.hpp"
+#include "run/persistence/checkpoint.hpp"
+#include "run/searches/ga_search.hpp"
+#include "run/loop/progress.hpp"
+#include "run/loop/run_recorder.hpp"
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>

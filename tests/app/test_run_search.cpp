@@ -1,9 +1,9 @@
-// The registry of searches and their states (run/run_search.hpp,
-// run/search_state.hpp), each search through the interface alone.
+// The registry of searches and their states (run/searches/run_search.hpp,
+// run/searches/search_state.hpp), each search through the interface alone.
 #include "evolution/genome_blob.hpp"
-#include "run/experiment_config.hpp"
+#include "run/config/experiment_config.hpp"
 #include "run/growth_problem.hpp"
-#include "run/run_search.hpp"
+#include "run/searches/run_search.hpp"
 #include "tests/app/search_states.hpp"
 
 #include <catch2/catch.hpp>

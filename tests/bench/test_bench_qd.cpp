@@ -3,8 +3,8 @@
 // morphogen-bench-qd end to end, including what it refuses.
 #include "bench/pyribs_cma.hpp"
 #include "bench/sphere_projection.hpp"
-#include "evolution/cma_rates.hpp"
-#include "evolution/full_cma.hpp"
+#include "evolution/emitters/cma/cma_rates.hpp"
+#include "evolution/emitters/cma/full_cma.hpp"
 #include "evolution/rng.hpp"
 
 #include <catch2/catch.hpp>

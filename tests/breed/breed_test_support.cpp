@@ -1,6 +1,6 @@
 #include "tests/breed/breed_test_support.hpp"
 
-#include "base/json_text.hpp"
+#include "core/base/json_text.hpp"
 #include "tests/support/temp_dir.hpp"
 
 #include <algorithm>

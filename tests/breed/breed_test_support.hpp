@@ -1,7 +1,7 @@
 #pragma once
 // What the breeding tests share: a tiny config (a birth in milliseconds) and
 // byte comparisons of session directories.
-#include "run/experiment_config.hpp"
+#include "run/config/experiment_config.hpp"
 
 #include <nlohmann/json.hpp>
 

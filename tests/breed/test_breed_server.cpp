@@ -1,7 +1,7 @@
 // The API of `morphogen breed` against the real process (docs/breed.md):
 // every refusal, many requests at once, two clients on one session,
 // Ctrl-C, kill -9 then resume, and --replay.
-#include "base/json_text.hpp"
+#include "core/base/json_text.hpp"
 #include "tests/breed/breed_test_support.hpp"
 #include "tests/breed/server_process.hpp"
 #include "tests/support/temp_dir.hpp"

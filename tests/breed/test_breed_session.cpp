@@ -4,7 +4,7 @@
 #include "breed/session.hpp"
 #include "tests/breed/breed_test_support.hpp"
 #include "tests/support/temp_dir.hpp"
-#include "base/json_text.hpp"
+#include "core/base/json_text.hpp"
 
 #include <cmath>
 #include <functional>

@@ -3,7 +3,7 @@
 // data's flutter channel reads it): the engine tests' shared plant.
 #include "engine/birth_steps.hpp"
 #include "engine/plant_export.hpp"
-#include "growth/genome_grower.hpp"
+#include "core/growth/genome_grower.hpp"
 #include "tests/support/test_genomes.hpp"
 
 #include <cstdint>

@@ -1,10 +1,10 @@
 // The engine-ready GLB: placed at the foot, scaled, named, its record in
 // extras, the same bytes for the same plant, bad options refused.
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 #include "engine/plant_export.hpp"
 #include "engine/plant_frame.hpp"
-#include "growth/genome_grower.hpp"
-#include "growth/network.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/growth/network/network.hpp"
 #include "tests/engine/glb_reader.hpp"
 #include "tests/support/test_genomes.hpp"
 

@@ -1,16 +1,16 @@
 // Levels of detail: the bounds docs/file-formats.md promises ("Levels of
 // detail") on random genomes at two growth settings, their wind data, and
 // the LOD nodes of the GLB.
-#include "base/config_reader.hpp"
-#include "base/errors.hpp"
+#include "core/base/config_reader.hpp"
+#include "core/base/errors.hpp"
 #include "engine/birth_steps.hpp"
 #include "engine/plant_export.hpp"
 #include "engine/plant_frame.hpp"
 #include "engine/plant_lods.hpp"
 #include "engine/plant_wind.hpp"
 #include "engine/species_pack.hpp"
-#include "growth/genome_grower.hpp"
-#include "growth/growth_params.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/growth/growth_params.hpp"
 #include "tests/engine/glb_reader.hpp"
 #include "tests/support/sanitizers.hpp"
 #include "tests/support/temp_dir.hpp"

@@ -4,7 +4,7 @@
 #include "engine/plant_export.hpp"
 #include "engine/plant_frame.hpp"
 #include "engine/plant_wind.hpp"
-#include "growth/genome_grower.hpp"
+#include "core/growth/genome_grower.hpp"
 #include "tests/engine/glb_reader.hpp"
 #include "tests/engine/grow_dated.hpp"
 #include "tests/support/test_genomes.hpp"

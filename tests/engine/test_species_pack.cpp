@@ -1,12 +1,12 @@
 // The species pack: a GLB per plant, manifest.json true to the files,
 // scatter.glb with EXT_mesh_gpu_instancing over plain nodes that stand
 // apart, the same bytes for the same plants, and what it refuses.
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 #include "engine/birth_steps.hpp"
 #include "engine/plant_scatter.hpp"
 #include "engine/species_pack.hpp"
-#include "growth/genome_grower.hpp"
-#include "growth/network.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/growth/network/network.hpp"
 #include "tests/engine/glb_reader.hpp"
 #include "tests/engine/grow_dated.hpp"
 #include "tests/support/temp_dir.hpp"

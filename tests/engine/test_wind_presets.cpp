@@ -1,13 +1,13 @@
 // Wind presets (engine/plant_wind.hpp): each preset's attributes hold _WIND's
 // own values per vertex, on every level of detail; without presets the GLB
 // keeps only POSITION, NORMAL and _WIND; presets without wind are refused.
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 #include "engine/birth_steps.hpp"
 #include "engine/plant_export.hpp"
 #include "engine/plant_scatter.hpp"
 #include "engine/plant_wind.hpp"
-#include "growth/genome_grower.hpp"
-#include "io/plant_glb.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/io/plant_glb.hpp"
 #include "tests/engine/glb_reader.hpp"
 #include "tests/engine/grow_dated.hpp"
 #include "tests/support/test_genomes.hpp"

@@ -1,12 +1,12 @@
 #pragma once
 // Breeding a search in tests as a run does: through the birth pipeline
-// (evolution/pipeline.hpp) with the batch schedule, scored by a
+// (evolution/execution/pipeline.hpp) with the batch schedule, scored by a
 // ThreadEvaluator. The library has one birth engine; this is its loop.
-#include "evolution/batch.hpp"
-#include "evolution/pipeline.hpp"
-#include "evolution/schedule.hpp"
-#include "evolution/thread_evaluator.hpp"
-#include "evolution/worker_threads.hpp"
+#include "evolution/execution/safe_evaluation.hpp"
+#include "evolution/execution/pipeline.hpp"
+#include "evolution/execution/schedule.hpp"
+#include "evolution/execution/thread_evaluator.hpp"
+#include "evolution/execution/worker_threads.hpp"
 
 #include <algorithm>
 #include <cstdint>

@@ -1,9 +1,9 @@
 #pragma once
 // What the MAP-Elites and pipeline tests share: a plain emitter, an empty
 // 8 x 8 archive, and the pipeline's do-nothing callbacks.
-#include "evolution/emitters.hpp"
-#include "evolution/gaussian_emitter.hpp"
-#include "evolution/map_elites.hpp"
+#include "evolution/emitters/emitters.hpp"
+#include "evolution/emitters/gaussian_emitter.hpp"
+#include "evolution/schedulers/map_elites.hpp"
 
 #include <memory>
 #include <string>

@@ -1,8 +1,8 @@
 // Archives: grid cells and clipping, CVT nearest centroid and centroids,
 // the insertion rule, and the archive's statistics.
-#include "evolution/archive.hpp"
-#include "evolution/archive_stats.hpp"
-#include "evolution/cvt.hpp"
+#include "evolution/archives/archive.hpp"
+#include "evolution/archives/archive_stats.hpp"
+#include "evolution/archives/cvt.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -3,16 +3,16 @@
 // sphere and a rotated ellipsoid only the full model can learn, the
 // CMA emitter alone, the same run for any threads, exact resume
 // through the checkpoint's JSON and genome blob, and damaged states refused.
-#include "evolution/cma_emitter.hpp"
-#include "evolution/cma_rates.hpp"
-#include "evolution/emitter_state_json.hpp"
-#include "evolution/full_cma.hpp"
-#include "evolution/gaussian_emitter.hpp"
-#include "evolution/map_elites.hpp"
-#include "evolution/map_elites_state_json.hpp"
-#include "evolution/pipeline.hpp"
-#include "evolution/sep_cma.hpp"
-#include "evolution/thread_evaluator.hpp"
+#include "evolution/emitters/cma/cma_emitter.hpp"
+#include "evolution/emitters/cma/cma_rates.hpp"
+#include "evolution/emitters/emitter_state_json.hpp"
+#include "evolution/emitters/cma/full_cma.hpp"
+#include "evolution/emitters/gaussian_emitter.hpp"
+#include "evolution/schedulers/map_elites.hpp"
+#include "evolution/schedulers/map_elites_state_json.hpp"
+#include "evolution/execution/pipeline.hpp"
+#include "evolution/emitters/cma/sep_cma.hpp"
+#include "evolution/execution/thread_evaluator.hpp"
 #include "tests/evolution/search_fixtures.hpp"
 #include "tests/evolution/toy_problems.hpp"
 

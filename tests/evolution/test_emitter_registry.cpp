@@ -1,9 +1,9 @@
 // The emitter registry (emitter_registry.hpp): each kind reads its own keys
 // with every default resolved, a key of another kind or a threshold clash is
 // an issue at its path, and the default emitters.
-#include "evolution/cma_emitter.hpp"
-#include "evolution/emitter_registry.hpp"
-#include "evolution/iso_line_emitter.hpp"
+#include "evolution/emitters/cma/cma_emitter.hpp"
+#include "evolution/emitters/emitter_registry.hpp"
+#include "evolution/emitters/iso_line_emitter.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,13 +1,13 @@
 // MAP-Elites emitters (emitters.hpp): shares that add up to the generation,
 // the gaussian and iso+line emitters alone, fitness-proportional
 // statistics, and the same run for any threads, order of results and stop.
-#include "evolution/emitters.hpp"
-#include "evolution/gaussian_emitter.hpp"
-#include "evolution/iso_line_emitter.hpp"
-#include "evolution/map_elites.hpp"
-#include "evolution/map_elites_state_json.hpp"
-#include "evolution/pipeline.hpp"
-#include "evolution/thread_evaluator.hpp"
+#include "evolution/emitters/emitters.hpp"
+#include "evolution/emitters/gaussian_emitter.hpp"
+#include "evolution/emitters/iso_line_emitter.hpp"
+#include "evolution/schedulers/map_elites.hpp"
+#include "evolution/schedulers/map_elites_state_json.hpp"
+#include "evolution/execution/pipeline.hpp"
+#include "evolution/execution/thread_evaluator.hpp"
 #include "tests/evolution/breeding.hpp"
 #include "tests/evolution/search_fixtures.hpp"
 #include "tests/evolution/toy_problems.hpp"

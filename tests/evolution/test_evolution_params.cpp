@@ -1,7 +1,7 @@
 // The `evolution` config section read beside its struct
 // (evolution/evolution_params.hpp): defaults, what is resolved, the schedule
 // a section implies, and its problems with their key paths.
-#include "base/config_reader.hpp"
+#include "core/base/config_reader.hpp"
 #include "evolution/evolution_params.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
 // Genomes outside the JSON of a search state (evolution/genome_blob.hpp): the
 // exact bits back, and refusal of a blob or a reference that does not fit.
-#include "evolution/ga_state_json.hpp"
+#include "evolution/ga/ga_state_json.hpp"
 #include "evolution/genome_blob.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,14 +1,14 @@
 // The birth pipeline (pipeline.hpp): the same run for any thread count and
 // any order of results, the batch schedule equal to its loop, lag 1 equal to a
 // plain sequential loop, and a stop at any birth resuming exactly.
-#include "evolution/ga_state_json.hpp"
-#include "evolution/map_elites.hpp"
-#include "evolution/map_elites_state_json.hpp"
-#include "evolution/pipeline.hpp"
-#include "evolution/steady_state.hpp"
-#include "evolution/thread_evaluator.hpp"
-#include "evolution/batch.hpp"
-#include "evolution/gaussian_emitter.hpp"
+#include "evolution/ga/ga_state_json.hpp"
+#include "evolution/schedulers/map_elites.hpp"
+#include "evolution/schedulers/map_elites_state_json.hpp"
+#include "evolution/execution/pipeline.hpp"
+#include "evolution/ga/steady_state.hpp"
+#include "evolution/execution/thread_evaluator.hpp"
+#include "evolution/execution/safe_evaluation.hpp"
+#include "evolution/emitters/gaussian_emitter.hpp"
 #include "tests/evolution/breeding.hpp"
 #include "tests/evolution/search_fixtures.hpp"
 #include "tests/evolution/toy_problems.hpp"

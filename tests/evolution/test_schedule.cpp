@@ -1,5 +1,5 @@
 // The birth schedules (docs/algorithm.md §8.4) against cases worked by hand.
-#include "evolution/schedule.hpp"
+#include "evolution/execution/schedule.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -1,8 +1,8 @@
 // The GA driver: determinism across thread counts, invalid children,
 // improvement on a toy problem, exact continuation from a saved state.
-#include "evolution/ga_state_json.hpp"
-#include "evolution/population_stats.hpp"
-#include "evolution/steady_state.hpp"
+#include "evolution/ga/ga_state_json.hpp"
+#include "evolution/ga/population_stats.hpp"
+#include "evolution/ga/steady_state.hpp"
 #include "tests/evolution/breeding.hpp"
 #include "tests/evolution/toy_problems.hpp"
 

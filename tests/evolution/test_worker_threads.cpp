@@ -1,5 +1,5 @@
 // resolve_threads: the one meaning of a thread count (run.threads, --threads).
-#include "evolution/worker_threads.hpp"
+#include "evolution/execution/worker_threads.hpp"
 
 #include <catch2/catch.hpp>
 

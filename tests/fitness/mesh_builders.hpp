@@ -1,6 +1,6 @@
 #pragma once
 // Small meshes with known answers for the fitness tests, built in code.
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <Eigen/Geometry>
 

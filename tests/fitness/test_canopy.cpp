@@ -2,7 +2,7 @@
 // z-buffer agreeing cell for cell with CGAL ray shooting.
 #include "fitness/canopy.hpp"
 #include "fitness/measures.hpp"
-#include "growth/genome_grower.hpp"
+#include "core/growth/genome_grower.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 #include "tests/support/sanitizers.hpp"
 

@@ -3,8 +3,8 @@
 // does_self_intersect (mesh_self_intersects): grown meshes never
 // self-intersect, where "allow" grows many that do.
 #include "fitness/cgal_geometry.hpp"
-#include "growth/genome_grower.hpp"
-#include "growth/self_intersection_check.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/growth/contact/self_intersection_check.hpp"
 #include "tests/support/sanitizers.hpp"
 #include "tests/support/test_genomes.hpp"
 
@@ -204,7 +204,7 @@ TEST_CASE("touch: 1000 random genomes never self-intersect (60 steps), both mode
 
 TEST_CASE("touch: random genomes at the default settings and at tree.json's never self-intersect", "[collision][contact]") {
     // Genomes 51-150: 73 self-intersects without the fail-safe (branching
-    // mode, default settings; tests/growth/test_contact_rule.cpp).
+    // mode, default settings; tests/core/growth/test_contact_rule.cpp).
     const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
     for (const GrowthParams& settings : {GrowthParams{}, tree_sizes(GrowthParams{})})
         for (const GrowthParams& mode : {settings, branching(settings)})

@@ -1,7 +1,7 @@
 // `morphogen score` end to end: runs the executable.
-#include "growth/genome_io.hpp"
-#include "growth/growth_params.hpp"
-#include "io/mesh_io.hpp"
+#include "core/growth/genome_io.hpp"
+#include "core/growth/growth_params.hpp"
+#include "core/io/mesh_io.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 #include "tests/support/temp_dir.hpp"
 

@@ -1,10 +1,10 @@
 // The growth animation: frame choice, the animated glTF read back with
 // tinygltf (nodes, meshes, accessors, STEP scale keys, one frame visible at a
 // time) and `grow --animate/--frames-obj` end to end, hostile options included.
-#include "base/errors.hpp"
-#include "io/mesh_io.hpp"
+#include "core/base/errors.hpp"
+#include "core/io/mesh_io.hpp"
 #include "report/growth_animation.hpp"
-#include "run/experiment_config.hpp"
+#include "run/config/experiment_config.hpp"
 #include "run/genome_source.hpp"
 #include "tests/app/evolve_test_support.hpp"
 

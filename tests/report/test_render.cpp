@@ -1,7 +1,7 @@
 // The software renderer, contact sheets and the `render` subcommand.
 #include "app/commands.hpp"
-#include "base/errors.hpp"
-#include "io/mesh_io.hpp"
+#include "core/base/errors.hpp"
+#include "core/io/mesh_io.hpp"
 #include "report/render.hpp"
 #include "tests/support/temp_dir.hpp"
 

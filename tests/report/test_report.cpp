@@ -3,11 +3,11 @@
 // half-written), the run directory left untouched, and the exit codes and
 // messages for non-run and damaged directories. The page itself is checked
 // in headless Chromium by tests/report/ (CTest).
-#include "base/errors.hpp"
+#include "core/base/errors.hpp"
 #include "report/report.hpp"
 #include "report/report_data.hpp"
 #include "report/report_plants.hpp"
-#include "run/run_directory.hpp"
+#include "run/persistence/run_directory.hpp"
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,6 +1,6 @@
 #pragma once
 // Looking for one problem among those a config reader collected.
-#include "base/config_reader.hpp"
+#include "core/base/config_reader.hpp"
 
 #include <string>
 

@@ -6,7 +6,7 @@
 // differ in sign gets one vertex (shared by every tetrahedron on that edge),
 // and the tetrahedron's cut is one triangle or a quad of two. Plus signed
 // distance functions of simple solids and a smooth union to compose plants.
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
 #pragma once
 // A GrowthObserver for tests: the hooks it was called with, in order.
-#include "growth/growth_observer.hpp"
+#include "core/growth/growth_observer.hpp"
 
 #include <algorithm>
 #include <utility>

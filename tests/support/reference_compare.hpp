@@ -4,7 +4,7 @@
 // requires the same faces, positions, directions, outputs (to 1e-9) and, in
 // the branching mode, growth states after every step. Returns the final
 // states, for further checks.
-#include "growth/growth.hpp"
+#include "core/growth/growth.hpp"
 #include "tests/support/reference_growth.hpp"
 #include "tests/support/test_genomes.hpp"
 

@@ -3,11 +3,11 @@
 // straight from the text with different data structures (maps and sets, the
 // per-vertex pseudocode network). The growth tests check that the engine and
 // this agree to rounding error.
-#include "growth/growth_params.hpp"
-#include "growth/network.hpp"
-#include "growth/seeds.hpp"
-#include "mesh/face_pair.hpp"
-#include "mesh/fan_certificate.hpp"
+#include "core/growth/growth_params.hpp"
+#include "core/growth/network/network.hpp"
+#include "core/growth/seeds/seeds.hpp"
+#include "core/mesh/face_pair.hpp"
+#include "core/mesh/fan_certificate.hpp"
 
 #include <algorithm>
 #include <array>
@@ -197,7 +197,7 @@ struct ReferenceGrowth {
     }
 
     // The flip guard: the new faces are not degenerate and intersect neither
-    // each other nor any face but the two they replace (mesh/face_pair.hpp).
+    // each other nor any face but the two they replace (core/mesh/face_pair.hpp).
     bool contact_flip_allowed(int f, int g, const Face& new_f, const Face& new_g) const {
         const IndexedTriangle tf = IndexedTriangle::of(x, new_f), tg = IndexedTriangle::of(x, new_g);
         if (triangle_degenerate(x[new_f[0]], x[new_f[1]], x[new_f[2]])) return false;

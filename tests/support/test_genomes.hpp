@@ -1,7 +1,7 @@
 #pragma once
 // Random genomes shared by the tests.
 #include "evolution/rng.hpp"
-#include "growth/network.hpp"
+#include "core/growth/network/network.hpp"
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
 // Small meshes and helpers shared by the tests (the mesh room only).
-#include "mesh/mesh.hpp"
+#include "core/mesh/mesh.hpp"
 
 #include <string>
 #include <utility>

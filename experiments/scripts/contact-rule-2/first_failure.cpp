@@ -5,9 +5,9 @@
 // tests/CMakeLists.txt, build, then: [TREE=1] [PAPER=1] [N=300 | G=19,73]
 // build/tests/test_fitness "[diag]".
 #include "fitness/cgal_geometry.hpp"
-#include "growth/genome_grower.hpp"
-#include "growth/contact_geometry.hpp"
-#include "mesh/face_pair.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/growth/contact/contact_geometry.hpp"
+#include "core/mesh/face_pair.hpp"
 #include "tests/support/test_genomes.hpp"
 #include <catch2/catch.hpp>
 #include <cstdio>

@@ -1,4 +1,4 @@
-// Side-by-side timing of two builds of growth/network_kernel.cpp, for deciding
+// Side-by-side timing of two builds of core/growth/network/network_kernel.cpp, for deciding
 // kernel changes on a shared, noisy machine: both run in one process,
 // alternating in short rounds, and the median of the per-round speed ratios
 // is reported. An A/A run gives 1.00 to 1.05 (the two copies' placement in
@@ -13,7 +13,7 @@
 #include <random>
 #include <vector>
 
-// The kernel interface (growth/network_kernel.hpp), once per renamed namespace.
+// The kernel interface (core/growth/network/network_kernel.hpp), once per renamed namespace.
 #define DECLARE_KERNEL(NS)                                                                                   \
     namespace morphogen::NS {                                                                                \
     struct Layer {                                                                                           \

@@ -12,12 +12,12 @@
 // METHOD: library (engine/simplify_lods) or one of CGAL's own policies with
 // the count stop of the library: gh_triangle (the old library), gh_plane,
 // gh_prob_triangle, lindstrom_turk. DENSE=1 measures with 10x the samples.
-#include "base/config_reader.hpp"
+#include "core/base/config_reader.hpp"
 #include "engine/plant_frame.hpp"
 #include "engine/plant_lods.hpp"
-#include "growth/genome_grower.hpp"
-#include "growth/growth_params.hpp"
-#include "io/mesh_io.hpp"
+#include "core/growth/genome_grower.hpp"
+#include "core/growth/growth_params.hpp"
+#include "core/io/mesh_io.hpp"
 #include "tests/support/test_genomes.hpp"
 #include "engine/cgal_lod_distance_cost.hpp"
 

@@ -6,7 +6,7 @@
 // genome (seed, k, steps) and a summary row: rewound count and rate, the
 // steps lost (median, max), the mean final vertices, the seconds.
 // Build and run: experiments/scripts/touch-rewind/rewind_rate.sh
-#include "growth/genome_grower.hpp"
+#include "core/growth/genome_grower.hpp"
 #include "tests/support/test_genomes.hpp"
 
 #include <algorithm>

@@ -1,0 +1,125 @@
+// Mesh file writers and readers (see mesh_io.hpp): choosing the format, file
+// access and dispatch. Each format lives in its own mesh_io_<format>.cpp.
+// Writers build the whole file in memory and write it with one call, so a
+// failed write is detected in one place and the partial file is removed.
+// Readers load the whole file and parse it from memory; every error names the
+// file (and line for text).
+#include "core/io/mesh_io.hpp"
+
+#include "core/base/errors.hpp"
+#include "core/io/mesh_io_detail.hpp"
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <string_view>
+#include <system_error>
+
+namespace morphogen {
+
+using namespace mesh_io_detail;
+
+namespace {
+
+void write_file(const std::string& path, std::string_view bytes) {
+    {
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        if (!out) fail(path, std::string("cannot open for writing: ") + std::strerror(errno));
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        out.close();
+        if (out) return;
+    }
+    // Do not leave a half-written file behind (but never remove a device or
+    // anything else that is not a plain file we were writing).
+    std::error_code ignored;
+    if (std::filesystem::is_regular_file(path, ignored)) std::filesystem::remove(path, ignored);
+    fail(path, "write failed (disk full or device error?)");
+}
+
+// The whole file, refused before reading when it is not a regular file (a
+// device or pipe could be endless) or larger than kMaxMeshFileBytes.
+std::string read_file(const std::string& path) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
+    const auto status = std::filesystem::status(path, ec);
+    if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
+        fail(path, "is not a regular file");
+    std::ifstream in(path, std::ios::binary);
+    if (!in) fail(path, std::string("cannot open for reading: ") + std::strerror(errno));
+    const auto size = std::filesystem::file_size(path, ec);
+    if (ec) fail(path, "cannot read its size: " + ec.message());
+    if (size > kMaxMeshFileBytes)
+        fail(path, "file of " + std::to_string(size) + " bytes is larger than the limit of " +
+                       std::to_string(kMaxMeshFileBytes) + " bytes for mesh files");
+    std::string bytes(static_cast<std::size_t>(size), '\0');
+    in.read(bytes.data(), static_cast<std::streamsize>(size));
+    if (in.gcount() != static_cast<std::streamsize>(size) || in.bad())
+        fail(path, "read failed (the file changed while being read?)");
+    return bytes;
+}
+
+void check_indices(MeshView mesh, const std::string& path) {
+    const auto nv = static_cast<long long>(mesh.positions.size());
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+        for (int v : mesh.faces[f])
+            if (v < 0 || v >= nv)
+                fail(path, "cannot write: face " + std::to_string(f) + " has vertex index " +
+                               std::to_string(v) + " out of range [0, " + std::to_string(nv) + ")");
+}
+
+}  // namespace
+
+MeshFormat mesh_format_from_path(const std::string& path) {
+    const std::string ext = lower(std::filesystem::path(path).extension().string());
+    if (ext == ".obj") return MeshFormat::obj;
+    if (ext == ".ply") return MeshFormat::ply;
+    if (ext == ".off") return MeshFormat::off;
+    if (ext == ".stl") return MeshFormat::stl;
+    if (ext == ".glb") return MeshFormat::glb;
+    fail(path, "unknown mesh file extension " + excerpt(ext.empty() ? std::string("(none)") : ext) +
+                   " (expected .obj, .ply, .off, .stl or .glb)");
+}
+
+void write_mesh(MeshView mesh, const std::string& path, const MeshWriteOptions& options) {
+    write_mesh(mesh, path, mesh_format_from_path(path), options);
+}
+
+void write_mesh(MeshView mesh, const std::string& path, MeshFormat format, const MeshWriteOptions& options) {
+    write_file(path, encode_mesh(mesh, format, options, path));
+}
+
+std::string encode_mesh(MeshView mesh, MeshFormat format, const MeshWriteOptions& options, const std::string& source) {
+    check_indices(mesh, source);
+    switch (format) {
+        case MeshFormat::obj: return obj_bytes(mesh);
+        case MeshFormat::ply: return ply_bytes(mesh, options);
+        case MeshFormat::off: return off_bytes(mesh);
+        case MeshFormat::stl: return stl_bytes(mesh);
+        case MeshFormat::glb: return glb_bytes(mesh, source);
+    }
+    fail(source, "unknown mesh format");
+}
+
+MeshArrays parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source) {
+    if (bytes.size() > kMaxMeshFileBytes)
+        fail(source, std::to_string(bytes.size()) + " bytes, more than the limit of " +
+                         std::to_string(kMaxMeshFileBytes) + " bytes for mesh files");
+    switch (format) {
+        case MeshFormat::obj: return read_obj(source, bytes);
+        case MeshFormat::off: return read_off(source, bytes);
+        case MeshFormat::ply: return read_ply(source, bytes);
+        case MeshFormat::stl: return read_stl(source, bytes);
+        case MeshFormat::glb: break;
+    }
+    fail(source, "reading GLB is not supported (use OBJ, PLY, OFF or STL)");
+}
+
+MeshArrays read_mesh(const std::string& path) {
+    const MeshFormat format = mesh_format_from_path(path);
+    if (format == MeshFormat::glb) fail(path, "reading GLB is not supported (use OBJ, PLY, OFF or STL)");
+    return parse_mesh(read_file(path), format, path);
+}
+
+}  // namespace morphogen

@@ -1,0 +1,53 @@
+#include "evolution/ga/steady_state.hpp"
+
+#include "evolution/execution/safe_evaluation.hpp"
+#include "evolution/operators.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace morphogen {
+
+namespace {
+void check_params(const GaParams& p) {
+    if (p.population < 2) throw std::invalid_argument("GA parameter out of range: population >= 2");
+    if (p.tournament < 1) throw std::invalid_argument("GA parameter out of range: tournament >= 1");
+    check_shared_params(birth_rules(p), p.batch, "GA");
+}
+}  // namespace
+
+SteadyStateGA::SteadyStateGA(const GaParams& params, std::uint64_t seed, Problem& problem, GaState state)
+    : params_(params), seed_(seed), problem_(problem), state_(std::move(state)) {
+    check_params(params_);
+    blocks_ = check_blocks(problem_.blocks(), problem_.dimension());
+}
+
+Individual SteadyStateGA::conceive(std::uint64_t birth) const {
+    return morphogen::conceive(state_.population, params_, blocks_, problem_.dimension(), seed_, birth);
+}
+
+Inserted SteadyStateGA::insert(Individual& child, std::string&) {
+    Inserted what;
+    if (!child.valid()) ++state_.invalid_in_generation;
+    keep_best(state_.best, child);
+    (void)insert_child(state_.population, child, static_cast<std::size_t>(params_.population));
+    ++state_.births;
+    if (at_generation_end()) {
+        what.ends_generation = true;
+        what.generation_invalid = state_.invalid_in_generation;
+        state_.invalid_in_generation = 0;
+    }
+    return what;
+}
+
+double SteadyStateGA::export_floor() const {
+    double floor = -std::numeric_limits<double>::infinity();
+    for (const Individual& member : state_.population)
+        if (member.valid()) floor = std::max(floor, member.fitness);
+    return floor;
+}
+
+}  // namespace morphogen

@@ -1,0 +1,43 @@
+#include "run/exports/plant_exports.hpp"
+
+#include "engine/birth_steps.hpp"
+#include "core/growth/genome_io.hpp"
+#include "core/io/mesh_io.hpp"
+
+namespace morphogen {
+
+PlantRecord birth_record(const ExperimentConfig& config, const Individual& individual,
+                         const std::vector<std::string>& measure_names, std::optional<std::uint64_t> cell) {
+    PlantRecord record;
+    record.id = std::to_string(individual.id);
+    record.genome_hash = genome_hash(individual.params);
+    if (individual.valid()) record.fitness = individual.fitness;
+    if (individual.descriptors.size() == measure_names.size())
+        for (std::size_t i = 0; i < measure_names.size(); ++i)
+            record.measures.emplace_back(measure_names[i], individual.descriptors[i]);
+    record.run = config.run.name;
+    record.birth = individual.id;
+    if (individual.parent1) record.parents.push_back(*individual.parent1);
+    if (individual.parent2) record.parents.push_back(*individual.parent2);
+    record.cell = cell;
+    return record;
+}
+
+DatedGrowth grow_dated(const GenomeGrower& grower, std::span<const double> params) {
+    BirthSteps births(grower.seed().mesh.num_vertices());
+    GrowthWorkspace workspace;
+    const Network network(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())});
+    GrowthState state = grower.grow(network, workspace, births.observer());
+    return DatedGrowth{.state = std::move(state), .birth_steps = births.steps()};
+}
+
+void export_engine_plant(const GenomeGrower& grower, std::span<const double> params, const PlantRecord& record,
+                         const PlantExportOptions& options, const std::filesystem::path& stem) {
+    const DatedGrowth grown = grow_dated(grower, params);
+    write_plant_glb(stem.string() + ".glb", grown.plant(), record, options);
+    write_mesh(grown.state.mesh.view(), stem.string() + ".obj");
+    save_genome(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())},
+                stem.string() + ".genome.json");
+}
+
+}  // namespace morphogen
