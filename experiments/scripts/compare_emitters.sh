@@ -31,6 +31,11 @@
 #   shape_fine  shape's ranges in 40 x 40 cells
 #   shape3d  spread [0, 4] x slenderness [0, 4] x lean [0, 8], 10 x 10 x 10
 #            (a table only: heatmaps are drawn for grids of two descriptors)
+#   low      height [0, 10] x footprint [0, 100], 10 x 10: small plants (with
+#            STEPS=60 CANOPY_HEIGHT=2.5)
+#   shape_small  shape's ranges in 10 x 10 cells
+# STEPS=N and CANOPY_HEIGHT=H change the problem of every run (growth.steps,
+# the canopy's height) from the shipped configs' 200 and 10.
 # The methods (all with configs/map_elites.json's network, growth, fitness and
 # evolution settings; only `emitters` differ between the MAP-Elites rows):
 #   ga        configs/canopy.json with the `descriptors` of every grid (recorded
@@ -78,7 +83,7 @@ mkdir -p "$out"
 # grid and method the config of its runs; prints "GRID METHOD RUN_NAME" lines,
 # RUN_NAME shared by the GA (random) runs of grids with the same measures.
 plan=$(python3 - "$out" "$population" "$budget" "${grids[*]}" "${methods[*]}" <<'PY'
-import json, sys
+import json, os, sys
 out, population, budget = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
 grids, methods = sys.argv[4].split(), sys.argv[5].split()
 ga_base = json.load(open("configs/canopy.json"))
@@ -88,6 +93,10 @@ for key in ("network", "growth", "fitness"):
         sys.exit(f"compare_emitters: configs/canopy.json and configs/map_elites.json differ in {key!r}")
 for c in (ga_base, me_base):
     c.pop("$schema", None)
+    if os.environ.get("STEPS"):
+        c["growth"]["steps"] = int(os.environ["STEPS"])
+    if os.environ.get("CANOPY_HEIGHT"):
+        c["fitness"]["height"] = float(os.environ["CANOPY_HEIGHT"])
 hf = [{"measure": "height", "min": 10, "max": 20, "bins": 20},
       {"measure": "footprint", "min": 0, "max": 800, "bins": 20}]
 all_grids = {
@@ -106,6 +115,10 @@ all_grids = {
                 {"measure": "lean", "min": 0, "max": 8, "bins": 20}],
     "shape_fine": [{"measure": "spread", "min": 0, "max": 4, "bins": 40},
                    {"measure": "slenderness", "min": 0, "max": 4, "bins": 40}],
+    "low": [{"measure": "height", "min": 0, "max": 10, "bins": 10},
+            {"measure": "footprint", "min": 0, "max": 100, "bins": 10}],
+    "shape_small": [{"measure": "spread", "min": 0, "max": 4, "bins": 10},
+                    {"measure": "slenderness", "min": 0, "max": 4, "bins": 10}],
     "shape3d": [{"measure": "spread", "min": 0, "max": 4, "bins": 10},
                 {"measure": "slenderness", "min": 0, "max": 4, "bins": 10},
                 {"measure": "lean", "min": 0, "max": 8, "bins": 10}],
