@@ -35,6 +35,11 @@ bool grows_self_intersecting(const Network& network, const GrowthParams& params,
 // The 60-step tests' genomes per block of four: 1000 in all, a fifth of them
 // under the sanitizers (tests/support/sanitizers.hpp).
 constexpr int kBlock = morphogen::testing::whole_or_under_sanitizers(250, 50);
+// Hostile genomes (wide weights) grow their full 200 steps to the vertex
+// budget, the slowest growth there is: 8 (32 with "touch") in the optimised
+// build, a quarter of them under the sanitizers.
+constexpr int kHostile = morphogen::testing::whole_or_under_sanitizers(8, 2);
+constexpr int kTouchHostile = morphogen::testing::whole_or_under_sanitizers(32, 8);
 
 // Genomes [first, first + count) of random_test_genome (init range 2, as
 // evolution's default): how many grow self-intersecting meshes.
@@ -91,7 +96,7 @@ TEST_CASE("hostile genomes (saturated outputs or wide weights) grown with collis
     CHECK_FALSE(grows_self_intersecting(saturated, with(params, Collisions::prevent), workspace));
     // Weights 10x the usual range: outputs flip between 0 and 1 from vertex
     // to vertex, the most folded growth random genomes show.
-    CHECK(count_self_intersecting(with(params, Collisions::prevent), 1, 8, 20.0) == 0);
+    CHECK(count_self_intersecting(with(params, Collisions::prevent), 1, kHostile, 20.0) == 0);
 }
 
 TEST_CASE("hostile genomes self-intersect when collisions are allowed", "[collision]") {
@@ -137,7 +142,7 @@ TEST_CASE("hostile genomes in the branching mode, collisions prevented, never se
     // Saturated: every vertex grows (w3 = 1) and turns toward its normal, up
     // and apart at the full rate, as far as speed and budget allow.
     CHECK_FALSE(grows_self_intersecting(saturated_genome(), with(params, Collisions::prevent), workspace));
-    CHECK(count_self_intersecting(with(params, Collisions::prevent), 1, 8, 20.0) == 0);
+    CHECK(count_self_intersecting(with(params, Collisions::prevent), 1, kHostile, 20.0) == 0);
 }
 
 TEST_CASE("1000 random genomes in the branching mode at the default growth settings never self-intersect",
@@ -219,7 +224,7 @@ TEST_CASE("touch: hostile genomes (saturated outputs or wide weights) never self
         // The most folded growth: outputs flip between 0 and 1 from vertex to
         // vertex (without the fail-safe, 2 of these 32 self-intersected in
         // the branching mode).
-        CHECK(count_touch_self_intersecting(mode, 1, 32, 20.0) == 0);
+        CHECK(count_touch_self_intersecting(mode, 1, kTouchHostile, 20.0) == 0);
     }
 }
 
