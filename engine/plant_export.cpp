@@ -25,8 +25,8 @@ std::string shortest(double value) {
 double lod_percent(double fraction) { return std::round(fraction * 1e5) / 1e3; }
 
 std::string plant_export_problem(const PlantExportOptions& options) {
-    if (options.height_m && !(*options.height_m > 0 && *options.height_m <= kMaxPlantHeightMetres))
-        return "--height " + shortest(*options.height_m) + ": must be a number of metres in (0, 10000]";
+    if (options.height_m && !(*options.height_m >= kMinPlantHeightMetres && *options.height_m <= kMaxPlantHeightMetres))
+        return "--height " + shortest(*options.height_m) + ": must be a number of metres in [0.001, 10000]";
     if (options.lods < 0 || options.lods > kMaxPlantLods)
         return "--lods " + std::to_string(options.lods) + ": must be between 1 and " + std::to_string(kMaxPlantLods);
     if (!options.wind_presets.empty() && !options.wind)

@@ -6,6 +6,7 @@
 // file (and line for text).
 #include "core/io/mesh_io.hpp"
 
+#include "core/base/atomic_file.hpp"
 #include "core/base/errors.hpp"
 #include "core/io/mesh_io_detail.hpp"
 
@@ -40,25 +41,7 @@ void write_file(const std::string& path, std::string_view bytes) {
 
 // The whole file, refused before reading when it is not a regular file (a
 // device or pipe could be endless) or larger than kMaxMeshFileBytes.
-std::string read_file(const std::string& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
-    const auto status = std::filesystem::status(path, ec);
-    if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-        fail(path, "is not a regular file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(path, std::string("cannot open for reading: ") + std::strerror(errno));
-    const auto size = std::filesystem::file_size(path, ec);
-    if (ec) fail(path, "cannot read its size: " + ec.message());
-    if (size > kMaxMeshFileBytes)
-        fail(path, "file of " + std::to_string(size) + " bytes is larger than the limit of " +
-                       std::to_string(kMaxMeshFileBytes) + " bytes for mesh files");
-    std::string bytes(static_cast<std::size_t>(size), '\0');
-    in.read(bytes.data(), static_cast<std::streamsize>(size));
-    if (in.gcount() != static_cast<std::streamsize>(size) || in.bad())
-        fail(path, "read failed (the file changed while being read?)");
-    return bytes;
-}
+std::string read_file(const std::string& path) { return read_file_bytes(path, {kMaxMeshFileBytes, "mesh files"}); }
 
 void check_indices(MeshView mesh, const std::string& path) {
     const auto nv = static_cast<long long>(mesh.positions.size());
