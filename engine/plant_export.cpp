@@ -68,10 +68,15 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
     ready.extras["lods_written"] = ready.levels.size();
     if (short_chain) {
         const int next = static_cast<int>(ready.levels.size());
-        std::cerr << "morphogen: " << ready.name << ": --lods " << options.lods << ": wrote " << next
-                  << " level(s); LOD" << next << " came no nearer than " << lod_percent(lods.refused_distance)
-                  << " % of the diagonal to LOD0 (bound " << lod_percent(lod_distance_bound(next))
-                  << " %) at half the triangles or a little more, so the chain stops at LOD" << next - 1 << "\n";
+        std::cerr << "morphogen: " << ready.name << ": --lods " << options.lods << ": wrote " << next << " level(s); ";
+        if (lods.refused_distance > 0)
+            std::cerr << "LOD" << next << " came no nearer than " << lod_percent(lods.refused_distance)
+                      << " % of the diagonal to LOD0 (bound " << lod_percent(lod_distance_bound(next))
+                      << " %) at half the triangles or a little more";
+        else
+            std::cerr << "LOD" << next << " could not be made (the plant has " << ready.levels.front().faces.size()
+                      << " triangles; a level keeps at least " << kMinLodFaces << ")";
+        std::cerr << ", so the chain stops at LOD" << next - 1 << "\n";
     }
     for (const MeshArrays& level : ready.levels) {
         if (!options.wind) ready.wind.emplace_back();

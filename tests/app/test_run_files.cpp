@@ -13,6 +13,8 @@
 #include <sys/stat.h>
 #include <sys/wait.h>
 
+#include <algorithm>
+#include <csignal>
 #include <cstdlib>
 #include <map>
 
@@ -219,4 +221,80 @@ TEST_CASE("--height below 1 mm is refused in grow, packs and configs", "[app][fi
     CHECK(config.code == 2);
     CHECK_THAT(config.output, Catch::Contains("run.export_glb.height") && Catch::Contains("0.001 (1 mm)"));
     CHECK(run_morphogen("grow --random 3 --steps 20 -o " + q(made.tmp.path / "mm.glb") + " --height 0.001").code == 0);
+}
+
+namespace {
+// A MAP-Elites run from a tetrahedron grown 2 steps: elites of 4 to ~40 triangles.
+std::string tiny_elites_config() {
+    return R"({"network": {"outputs": 4, "hidden": [5]},
+ "growth": {"steps": 2, "max_vertices": 300, "seed_mesh": "tetrahedron"},
+ "fitness": {"type": "canopy", "height": 1, "cell": 0.1},
+ "evolution": {"algorithm": "map_elites", "population": 12, "batch": 4, "mutation_rate": 0.2},
+ "descriptors": [{"measure": "height", "min": 0, "max": 3, "bins": 6},
+                 {"measure": "footprint", "min": 0, "max": 10, "bins": 5}],
+ "archive": {"type": "grid"},
+ "run": {"name": "tiny", "seed": 3, "generations": 1}})";
+}
+}  // namespace
+
+TEST_CASE("archive --pack --lods 3 gives an elite under 32 triangles the levels it can have", "[app][files][engine]") {
+    TempDir tmp("tiny-pack");
+    write_text(tmp.path / "tiny.json", tiny_elites_config());
+    REQUIRE(run_morphogen("evolve " + q(tmp.path / "tiny.json") + " --out " + q(tmp.path / "run") + " --no-report").code == 0);
+    const CliResult r = run_morphogen("archive " + q(tmp.path / "run") + " --pack " + q(tmp.path / "pack") + " --lods 3");
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    const nlohmann::json manifest = nlohmann::json::parse(read_text(tmp.path / "pack" / "manifest.json"));
+    const std::string archive = read_text(tmp.path / "run" / "archive.csv");
+    const auto elites = static_cast<std::size_t>(std::count(archive.begin(), archive.end(), '\n') - 1);
+    CHECK(manifest["species"].size() == elites);  // every elite packed
+    std::size_t small = 0;
+    for (const nlohmann::json& species : manifest["species"]) {
+        CAPTURE(species.dump());
+        const auto lod0 = species["triangles"][0].get<std::size_t>();
+        CHECK(fs::exists(tmp.path / "pack" / species["file"].get<std::string>()));
+        if (lod0 >= 32) continue;
+        ++small;
+        REQUIRE(species.contains("lods_written"));
+        CHECK(species["lods_written"].get<std::size_t>() < 3);
+        CHECK(species["triangles"].size() == species["lods_written"].get<std::size_t>());
+    }
+    CHECK(small > 0);
+    CHECK_THAT(r.output, Catch::Contains("could not be made (the plant has"));
+}
+
+TEST_CASE("archive stops on SIGTERM with exit 130 and leaves no pack; an incomplete pack is named", "[app][files][faults]") {
+    const FinishedRun made;
+    // Sent while SIGTERM is blocked across exec: it arrives the moment
+    // archive's handlers are in place, before its first plant.
+    const fs::path pack = made.tmp.path / "pack";
+    const int pid = spawn_morphogen({"archive", made.run.string(), "--pack", pack.string(), "--lods", "2"},
+                                    made.tmp.path / "archive.log", true);
+    ::kill(pid, SIGTERM);
+    bool killed = false;
+    const int code = wait_for(pid, &killed);
+    INFO(read_text(made.tmp.path / "archive.log"));
+    CHECK_FALSE(killed);
+    CHECK(code == 130);
+    CHECK_THAT(read_text(made.tmp.path / "archive.log"), Catch::Contains("stopped by signal 15"));
+    CHECK_FALSE(fs::exists(pack));
+    // The same for the elites' export: stopped before its first elite.
+    const int elites_pid = spawn_morphogen({"archive", made.run.string(), "--out", (made.tmp.path / "el").string()},
+                                           made.tmp.path / "elites.log", true);
+    ::kill(elites_pid, SIGTERM);
+    CHECK(wait_for(elites_pid) == 130);
+    CHECK_FALSE(fs::exists(made.tmp.path / "el" / "species.csv"));
+
+    // What a kill -9 mid-pack leaves: plant files, no manifest.
+    fs::create_directories(pack);
+    write_text(pack / "plant_7.glb", "glTF");
+    const CliResult again = run_morphogen("archive " + q(made.run) + " --pack " + q(pack));
+    INFO(again.output);
+    CHECK(again.code == 3);
+    CHECK_THAT(again.output, Catch::Contains("holds an incomplete species pack") &&
+                                 Catch::Contains("remove the directory and run the same command again"));
+    CHECK(read_text(pack / "plant_7.glb") == "glTF");
+    const CliResult whole = run_morphogen("archive " + q(made.run) + " --pack " + q(made.tmp.path / "whole"));
+    CHECK(whole.code == 0);
+    CHECK(fs::exists(made.tmp.path / "whole" / "manifest.json"));
 }
