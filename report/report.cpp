@@ -280,8 +280,8 @@ std::vector<std::uint64_t> viewer_meshes(Reporter& r, const RunInputs& in) {
     return exported;
 }
 
-// Pictures of exported generations, from the .obj beside each .glb (the mesh
-// readers do not read GLB): each mesh read once, each thumbnail drawn once.
+// Pictures of exported generations, from the .obj beside each .glb (its exact
+// coordinates; the GLB holds floats): each mesh read once, each thumbnail drawn once.
 class Pictures {
 public:
     Pictures(Reporter& r, const RunInputs& in, std::vector<std::uint64_t> exported)

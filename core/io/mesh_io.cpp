@@ -94,14 +94,13 @@ MeshArrays parse_mesh(std::string_view bytes, MeshFormat format, const std::stri
         case MeshFormat::off: return read_off(source, bytes);
         case MeshFormat::ply: return read_ply(source, bytes);
         case MeshFormat::stl: return read_stl(source, bytes);
-        case MeshFormat::glb: break;
+        case MeshFormat::glb: return read_glb(source, bytes);
     }
-    fail(source, "reading GLB is not supported (use OBJ, PLY, OFF or STL)");
+    fail(source, "unknown mesh format");
 }
 
 MeshArrays read_mesh(const std::string& path) {
     const MeshFormat format = mesh_format_from_path(path);
-    if (format == MeshFormat::glb) fail(path, "reading GLB is not supported (use OBJ, PLY, OFF or STL)");
     return parse_mesh(read_file(path), format, path);
 }
 

@@ -298,3 +298,19 @@ TEST_CASE("archive stops on SIGTERM with exit 130 and leaves no pack; an incompl
     CHECK(whole.code == 0);
     CHECK(fs::exists(made.tmp.path / "whole" / "manifest.json"));
 }
+
+TEST_CASE("render draws GLB files: grow's, an engine export's LOD0 and a pack's plants", "[app][files][render]") {
+    TempDir tmp("render-glb");
+    REQUIRE(run_morphogen("grow --random 4 --steps 120 -o " + q(tmp.path / "plain.glb")).code == 0);
+    REQUIRE(run_morphogen("grow --random 4 --steps 120 -o " + q(tmp.path / "plain.obj")).code == 0);
+    REQUIRE(run_morphogen("grow --random 4 --steps 120 -o " + q(tmp.path / "lods.glb") + " --lods 3 --wind").code == 0);
+    const CliResult r = run_morphogen("render " + q(tmp.path / "plain.glb") + " " + q(tmp.path / "lods.glb") + " -o " +
+                                      q(tmp.path / "sheet.png"));
+    INFO(r.output);
+    CHECK(r.code == 0);
+    CHECK(fs::file_size(tmp.path / "sheet.png") > 0);
+    // The GLB's body is the same mesh as the OBJ beside it: the same picture.
+    REQUIRE(run_morphogen("render " + q(tmp.path / "plain.obj") + " -o " + q(tmp.path / "obj.png")).code == 0);
+    REQUIRE(run_morphogen("render " + q(tmp.path / "plain.glb") + " -o " + q(tmp.path / "glb.png")).code == 0);
+    CHECK(read_text(tmp.path / "obj.png") == read_text(tmp.path / "glb.png"));
+}
