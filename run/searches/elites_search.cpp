@@ -2,6 +2,7 @@
 
 #include "evolution/archives/archive_stats.hpp"
 #include "evolution/archives/cvt.hpp"
+#include "evolution/emitters/cma/cma_emitter.hpp"
 #include "evolution/emitters/emitter_state_json.hpp"
 #include "evolution/schedulers/map_elites_state_json.hpp"
 #include "run/persistence/archive_csv.hpp"
@@ -9,6 +10,7 @@
 #include "run/loop/stop_signals.hpp"
 
 #include <algorithm>
+#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -80,8 +82,30 @@ nlohmann::json ElitesSearchState::to_json(GenomeBlobWriter* genomes) const {
 
 std::string ElitesSearchState::archive_text() const { return archive_csv(state.archive); }
 
+namespace {
+std::string parents_text(const std::optional<std::uint64_t>& parent1, const std::optional<std::uint64_t>& parent2) {
+    const auto one = [](const std::optional<std::uint64_t>& p) { return p ? std::to_string(*p) : std::string("null"); };
+    return one(parent1) + ", " + one(parent2);
+}
+
+// A CMA emitter's children take their parents from its state alone:
+// parent1 its origin (null before its first start), parent2 null. Its state
+// changes only where it may restart: after its last birth of a generation is
+// inserted, and at a generation's end (a first start). Between two such
+// points every child it conceives has the same parents. `first` and `count`:
+// where its births lie in each generation.
+struct CmaBirths {
+    std::uint64_t population = 0, end = 0;  // end: its last birth's offset in a generation, plus one
+    const CmaEmitter* now = nullptr;        // its state after the checkpoint's births
+    // The stretch between two restart points that a source state lies in.
+    std::uint64_t stretch(std::uint64_t source) const {
+        return 2 * (source / population) + (source % population >= end ? 1 : 0);
+    }
+};
+}  // namespace
+
 void ElitesSearchState::check_pending_parents(std::span<const Individual> pending,
-                                              std::span<const RecordedBirth> recorded, const BirthReplay&,
+                                              std::span<const RecordedBirth> recorded, const BirthReplay& replay,
                                               const BirthSchedule& schedule) const {
     for (std::size_t i = 0; i < pending.size(); ++i) {
         const Individual& child = pending[i];
@@ -93,6 +117,48 @@ void ElitesSearchState::check_pending_parents(std::span<const Individual> pendin
                                             ", not a valid birth before its source state (" + std::to_string(source) +
                                             " births) in lineage.csv");
     }
+    // The CMA emitters' children (docs/algorithm.md §9.8): the same parents
+    // as every other child of that emitter conceived between the same two
+    // restart points (lineage.csv's or pending), and, conceived after the
+    // emitter's last restart point, its origin now.
+    const auto P = static_cast<std::uint64_t>(replay.params.population);
+    if (replay.emitters.size() != state.emitters.size() || P == 0) return;
+    const std::vector<std::uint64_t> per_generation = births_per_generation(replay.emitters, P);
+    std::vector<CmaBirths> cma(state.emitters.size());
+    std::uint64_t offset = 0;
+    for (std::size_t k = 0; k < cma.size(); ++k) {
+        offset += per_generation[k];
+        cma[k] = {P, offset, dynamic_cast<const CmaEmitter*>(state.emitters[k].get())};
+    }
+    struct Seen {
+        std::uint64_t id;
+        std::optional<std::uint64_t> parent1, parent2;
+    };
+    std::map<std::pair<std::size_t, std::uint64_t>, Seen> first_in;  // (emitter, stretch) -> its first child
+    const auto check = [&](std::uint64_t id, const std::optional<std::uint64_t>& parent1,
+                           const std::optional<std::uint64_t>& parent2, const std::string& where) {
+        if (id < P) return;
+        const std::size_t k = emitter_of(id, per_generation, P);
+        if (cma[k].now == nullptr) return;
+        const std::uint64_t source = schedule.source(id);
+        const auto refuse = [&](const std::string& why) {
+            throw std::invalid_argument(where + " (birth " + std::to_string(id) + ", CMA emitter " + std::to_string(k) +
+                                        ") has parents " + parents_text(parent1, parent2) + "; " + why);
+        };
+        if (parent2) refuse("a CMA emitter's child has one parent, its origin");
+        const auto [at, fresh] = first_in.try_emplace({k, cma[k].stretch(source)}, Seen{id, parent1, parent2});
+        if (!fresh && at->second.parent1 != parent1)
+            refuse("birth " + std::to_string(at->second.id) + ", conceived from the same state of that emitter, has " +
+                   parents_text(at->second.parent1, at->second.parent2));
+        const CmaEmitterState& now = cma[k].now->state();
+        if (cma[k].stretch(source) == cma[k].stretch(births()) && parent1 != (now.started ? now.origin : std::nullopt))
+            refuse("that emitter's state, unchanged since its source, gives " +
+                   parents_text(now.started ? now.origin : std::nullopt, std::nullopt));
+    };
+    for (std::uint64_t id = 0; id < recorded.size(); ++id)
+        check(id, recorded[id].parent1, recorded[id].parent2, "lineage.csv row " + std::to_string(id + 1));
+    for (std::size_t i = 0; i < pending.size(); ++i)
+        check(pending[i].id, pending[i].parent1, pending[i].parent2, "pending[" + std::to_string(i) + "]");
 }
 
 std::unique_ptr<RunSearch> ElitesSearchState::start(const ExperimentConfig& config, Problem& problem) {

@@ -280,6 +280,40 @@ TEST_CASE("forged parents of pending births are refused: re-drawn from the popul
     check_same_results(tmp.path / "whole", run);
 }
 
+TEST_CASE("forged parents of MAP-Elites' pending births are refused: a CMA emitter's children share its origin",
+          "[app][checkpoint][map_elites]") {
+    // The default emitters (two cma_me), population 10, stopped at generation 10.
+    TempDir tmp("me-pending-parents");
+    write_text(tmp.path / "me.json", R"({"network": {"outputs": 4, "hidden": [5]},
+        "growth": {"steps": 12, "max_vertices": 300}, "fitness": {"type": "canopy", "height": 1, "cell": 0.1},
+        "evolution": {"algorithm": "map_elites", "population": 10},
+        "descriptors": [{"measure": "height", "min": 0, "max": 3, "bins": 6},
+                        {"measure": "footprint", "min": 0, "max": 10, "bins": 5}],
+        "archive": {"type": "grid"}, "run": {"seed": 3, "generations": 20}})");
+    const auto run = tmp.path / "run";
+    REQUIRE(run_morphogen("evolve " + q(tmp.path / "me.json") + " --out " + q(run) + " --generations 10 --no-report")
+                .code == 0);
+    const std::string good = read_text(run / "checkpoint.json");
+    const nlohmann::json content = checkpoint_content(good, "good");
+    const nlohmann::json& pending = content["pending"];
+    // pending[0] and the first child of the other emitter: parents that
+    // both came before both sources, so only their emitters' states tell.
+    std::size_t other = 1;
+    while (other < pending.size() && pending[other]["parent1"] == pending[0]["parent1"]) ++other;
+    REQUIRE(other < pending.size());
+    check_edits_refused(run, content, {
+        {[](nlohmann::json& c) { c["pending"][0]["parent1"] = nullptr; }, "conceived from the same state of that emitter"},
+        {[](nlohmann::json& c) { c["pending"][0]["parent1"] = 0; }, "has parent"},
+        {[other](nlohmann::json& c) { std::swap(c["pending"][0]["parent1"], c["pending"][other]["parent1"]); },
+         "conceived from the same state of that emitter"},
+        {[](nlohmann::json& c) { c["pending"][0]["parent2"] = c["pending"][0]["parent1"]; }, "one parent, its origin"},
+    });
+    write_text(run / "checkpoint.json", good);
+    REQUIRE(run_morphogen("resume " + q(run) + " --generations 20 --no-report").code == 0);
+    REQUIRE(run_morphogen("evolve " + q(tmp.path / "me.json") + " --out " + q(tmp.path / "whole") + " --no-report").code == 0);
+    CHECK(read_text(run / "lineage.csv") == read_text(tmp.path / "whole" / "lineage.csv"));
+}
+
 TEST_CASE("invalid births and the best are checked against lineage.csv", "[app][checkpoint]") {
     // Two generations of two: births 1 and 3 invalid, birth 2 the best.
     auto born = [](std::uint64_t id, std::optional<std::uint64_t> parent, double fitness) {

@@ -106,32 +106,28 @@ TEST_CASE("a FIFO, a directory or a device in place of a run's file is not a reg
 
 TEST_CASE("report names a FIFO or a directory for what it is, not missing; NUL bytes are not empty", "[app][files]") {
     const FinishedRun made;
-    const fs::path fifo = made.with("lineage_fifo", "lineage.csv", make_fifo);
-    const CliResult on_fifo = run_limited("", "report " + q(fifo));
-    INFO(on_fifo.output);
-    CHECK(on_fifo.code == 3);
-    CHECK_THAT(on_fifo.output, Catch::Contains("lineage.csv: is not a regular file (it is a FIFO)"));
-    CHECK_THAT(on_fifo.output, !Catch::Contains("missing"));
-
-    const fs::path dir = made.with("history_dir", "history.csv", make_dir);
-    const CliResult on_dir = run_limited("", "report " + q(dir));
-    INFO(on_dir.output);
-    CHECK(on_dir.code == 3);
-    CHECK_THAT(on_dir.output, Catch::Contains("history.csv: is not a regular file (it is a directory)"));
-
-    const fs::path nul = made.with("lineage_nul", "lineage.csv", [](const fs::path& p) { sparse(p, 1 << 20); });
-    const CliResult on_nul = run_limited("", "report " + q(nul));
-    INFO(on_nul.output);
-    CHECK(on_nul.code == 3);
-    CHECK_THAT(on_nul.output, Catch::Contains("no header line (1048576 bytes without an end of line)"));
-    CHECK_THAT(on_nul.output, !Catch::Contains("empty"));
-
-    // A FIFO in best/: that generation is skipped with a note, the report is written.
-    const fs::path glb = made.with("glb_fifo", "best/gen_0001.glb", make_fifo);
-    const CliResult on_glb = run_limited("", "report " + q(glb));
-    INFO(on_glb.output);
-    CHECK(on_glb.code == 0);
-    CHECK_THAT(on_glb.output, Catch::Contains("gen_0001.glb: is not a regular file (it is a FIFO)"));
+    struct Case {
+        const char* label;
+        const char* name;
+        void (*make)(const fs::path&);
+        int code;
+        const char* says;
+        const char* never;
+    };
+    const Case cases[] = {
+        {"lineage_fifo", "lineage.csv", make_fifo, 3, "lineage.csv: is not a regular file (it is a FIFO)", "missing"},
+        {"history_dir", "history.csv", make_dir, 3, "history.csv: is not a regular file (it is a directory)", "missing"},
+        {"lineage_nul", "lineage.csv", [](const fs::path& p) { sparse(p, 1 << 20); }, 3,
+         "no header line (1048576 bytes without an end of line)", "empty"},
+        // A FIFO in best/: that generation is skipped with a note, the report is written.
+        {"glb_fifo", "best/gen_0001.glb", make_fifo, 0, "gen_0001.glb: is not a regular file (it is a FIFO)", "missing"},
+    };
+    for (const Case& c : cases) {
+        const CliResult r = run_limited("", "report " + q(made.with(c.label, c.name, c.make)));
+        CAPTURE(c.label, r.output);
+        CHECK(r.code == c.code);
+        CHECK_THAT(r.output, Catch::Contains(c.says) && !Catch::Contains(c.never));
+    }
 }
 
 TEST_CASE("files larger than their reader's bound are refused naming the file and the bound", "[app][files]") {
