@@ -80,6 +80,7 @@ struct LineageRow {
     bool valid = false;
     double fitness = 0.0;
     std::optional<std::uint64_t> parent1, parent2;
+    std::vector<double> descriptors;  // a valid birth's descriptor cells, when they all read as numbers
 };
 
 std::uint64_t parse_u64(std::string_view cell, const std::string& where) {
@@ -124,6 +125,17 @@ std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t bi
             if (error != std::errc() || stop != fitness.data() + fitness.size() || !std::isfinite(row.fitness))
                 contradiction(where + ": the fitness is not a number");
             row.valid = true;
+            std::size_t at = line.find(',', fitness_start);
+            for (std::size_t d = 0; d < row.columns && at != std::string_view::npos; ++d) {
+                const std::size_t next = line.find(',', at + 1);
+                const std::string_view text = line.substr(at + 1, next - at - 1);
+                double value = 0;
+                const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+                if (text.empty() || error != std::errc() || stop != text.data() + text.size()) break;
+                row.descriptors.push_back(value);
+                at = next;
+            }
+            if (row.descriptors.size() != row.columns) row.descriptors.clear();
         }
         rows.push_back(row);
         pos = end + 1;
@@ -177,7 +189,8 @@ void check_last_row(const RunState& s, const ExperimentConfig& config, std::uint
 std::vector<RecordedBirth> recorded_births(const std::vector<LineageRow>& rows) {
     std::vector<RecordedBirth> recorded;
     recorded.reserve(rows.size());
-    for (const LineageRow& row : rows) recorded.push_back({row.valid, row.fitness, row.parent1, row.parent2});
+    for (const LineageRow& row : rows)
+        recorded.push_back({row.valid, row.fitness, row.parent1, row.parent2, row.descriptors});
     return recorded;
 }
 }  // namespace

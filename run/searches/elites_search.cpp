@@ -104,6 +104,51 @@ struct CmaBirths {
 };
 }  // namespace
 
+// An emitter without state (gaussian, iso_line) conceives from the archive at
+// the birth's source alone: that archive is replayed from lineage.csv (ids,
+// fitness, descriptors; the parameters, which no draw of parents reads, zero)
+// and the parents drawn again. Not for a lineage.csv without descriptor
+// columns (a run begun before it had them).
+void ElitesSearchState::check_replayed_parents(std::span<const Individual> pending,
+                                               std::span<const RecordedBirth> recorded, const BirthReplay& replay,
+                                               const BirthSchedule& schedule,
+                                               std::span<const std::uint64_t> per_generation) const {
+    const auto P = static_cast<std::uint64_t>(replay.params.population);
+    const Archive& now = state.archive;
+    const auto stateless = [&](std::uint64_t id) {
+        return id >= P && !replay.emitters[emitter_of(id, per_generation, P)].emitter->keeps_state();
+    };
+    if (std::none_of(pending.begin(), pending.end(), [&](const Individual& c) { return stateless(c.id); })) return;
+    for (const RecordedBirth& birth : recorded)
+        if (birth.valid && birth.descriptors.size() != now.dimensions()) return;
+    Archive archive = now.kind() == ArchiveKind::grid ? Archive::grid(now.ranges()) : Archive::cvt(now.ranges(), now.centroids());
+    if (const std::optional<ThresholdParams> t = archive_thresholds(replay.emitters)) archive.keep_thresholds(*t);
+    const BirthRules rules{P, replay.params.init_range, replay.params.crossover, replay.params.mutation_rate,
+                           replay.params.mutation_sigma};
+    std::uint64_t done = 0;
+    for (std::size_t i = 0; i < pending.size(); ++i) {
+        const Individual& child = pending[i];
+        if (!stateless(child.id)) continue;
+        for (const std::uint64_t source = schedule.source(child.id); done < source && done < recorded.size(); ++done) {
+            Individual born;
+            born.id = done;
+            born.fitness = recorded[done].valid ? recorded[done].fitness : invalid_fitness;
+            born.descriptors = recorded[done].descriptors;
+            born.params.assign(replay.dimension, 0.0);
+            (void)archive.insert(born);
+        }
+        const ParentPool pool(archive.snapshot());
+        const EmitterSource source{rules, replay.blocks, replay.dimension, replay.seed, pool};
+        const Individual expected =
+            replay.emitters[emitter_of(child.id, per_generation, P)].emitter->conceive(source, child.id);
+        if (expected.parent1 != child.parent1 || expected.parent2 != child.parent2)
+            throw std::invalid_argument("pending[" + std::to_string(i) + "] (birth " + std::to_string(child.id) +
+                                        ") has parents " + parents_text(child.parent1, child.parent2) +
+                                        "; the archive lineage.csv records at its source state gives " +
+                                        parents_text(expected.parent1, expected.parent2));
+    }
+}
+
 void ElitesSearchState::check_pending_parents(std::span<const Individual> pending,
                                               std::span<const RecordedBirth> recorded, const BirthReplay& replay,
                                               const BirthSchedule& schedule) const {
@@ -122,8 +167,10 @@ void ElitesSearchState::check_pending_parents(std::span<const Individual> pendin
     // restart points (lineage.csv's or pending), and, conceived after the
     // emitter's last restart point, its origin now.
     const auto P = static_cast<std::uint64_t>(replay.params.population);
-    if (replay.emitters.size() != state.emitters.size() || P == 0) return;
+    if (replay.emitters.empty() || P == 0) return;
     const std::vector<std::uint64_t> per_generation = births_per_generation(replay.emitters, P);
+    check_replayed_parents(pending, recorded, replay, schedule, per_generation);
+    if (replay.emitters.size() != state.emitters.size()) return;
     std::vector<CmaBirths> cma(state.emitters.size());
     std::uint64_t offset = 0;
     for (std::size_t k = 0; k < cma.size(); ++k) {

@@ -44,6 +44,7 @@ struct RecordedBirth {
     bool valid = false;
     double fitness = 0.0;
     std::optional<std::uint64_t> parent1, parent2;
+    std::vector<double> descriptors;  // its descriptor cells (none for an invalid birth or a 5-column lineage.csv)
 };
 
 // What re-drawing a birth's parents needs (docs/algorithm.md §8.2): the GA's
