@@ -105,7 +105,7 @@ TEST_CASE("a FIFO, a directory or a device in place of a run's file is not a reg
         }
 }
 
-TEST_CASE("report names a FIFO or a directory for what it is, not missing; NUL bytes are not empty", "[app][files]") {
+TEST_CASE("report names a FIFO or a directory for what it is, not missing, and NUL bytes are not empty", "[app][files]") {
     const FinishedRun made;
     struct Case {
         const char* label;
@@ -262,7 +262,7 @@ TEST_CASE("archive --pack --lods 3 gives an elite under 32 triangles the levels 
     CHECK_THAT(r.output, Catch::Contains("could not be made (the plant has"));
 }
 
-TEST_CASE("archive stops on SIGTERM with exit 130 and leaves no pack; an incomplete pack is named", "[app][files][faults]") {
+TEST_CASE("archive stops on SIGTERM with exit 130 and leaves no pack, and names an incomplete pack", "[app][files][faults]") {
     const FinishedRun made;
     // Sent while SIGTERM is blocked across exec: it arrives the moment
     // archive's handlers are in place, before its first plant.
@@ -298,7 +298,7 @@ TEST_CASE("archive stops on SIGTERM with exit 130 and leaves no pack; an incompl
     CHECK(fs::exists(made.tmp.path / "whole" / "manifest.json"));
 }
 
-TEST_CASE("render draws GLB files: grow's, an engine export's LOD0 and a pack's plants", "[app][files][render]") {
+TEST_CASE("render draws GLB files: grow's and an engine export's LOD0", "[app][files][render]") {
     TempDir tmp("render-glb");
     REQUIRE(run_morphogen("grow --random 4 --steps 120 -o " + q(tmp.path / "plain.glb")).code == 0);
     REQUIRE(run_morphogen("grow --random 4 --steps 120 -o " + q(tmp.path / "plain.obj")).code == 0);
