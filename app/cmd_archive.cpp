@@ -15,7 +15,9 @@
 #include "run/exports/plant_exports.hpp"
 #include "run/persistence/run_directory.hpp"
 #include "run/exports/run_pack.hpp"
+#include "run/exit_codes.hpp"
 #include "run/loop/run_records.hpp"
+#include "run/loop/stop_signals.hpp"
 
 #include <algorithm>
 #include <cstdio>
@@ -23,6 +25,7 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -144,14 +147,21 @@ void write_map(const Archive& archive, const std::vector<Elite>& elites, const G
 }
 
 int run_archive(const ArchiveOptions& o) {
+    StopSignals signals;  // first: Ctrl-C/SIGTERM stop it between plants, exit 130
     const RunPaths paths = run_paths(o.dir);
     if (!fs::is_directory(paths.dir)) throw IoError("run directory " + o.dir + " does not exist");
     const RunState state = load_checkpoint(paths.checkpoint);
     const ExperimentConfig config = read_experiment_config(state.config, paths.checkpoint.string());
     if (!o.pack.empty()) {
         const GrowthProblem problem(config);
-        const std::size_t species = write_run_pack(config, *state.search, problem.grower(), o.plant, o.top, o.pack);
-        std::cout << "wrote a pack of " << species << " species to " << o.pack << " (manifest.json, scatter.glb)\n";
+        const std::optional<std::size_t> species =
+            write_run_pack(config, *state.search, problem.grower(), o.plant, o.top, o.pack);
+        if (!species) {
+            std::cerr << "morphogen: stopped by signal " << StopSignals::signal_number() << "; the pack's files were "
+                      << "removed, nothing else changed. Write it with the same command again\n";
+            return exit_code::interrupted;
+        }
+        std::cout << "wrote a pack of " << *species << " species to " << o.pack << " (manifest.json, scatter.glb)\n";
         return 0;
     }
     const MapElitesState* run_elites = elites_state(*state.search);
@@ -174,6 +184,11 @@ int run_archive(const ArchiveOptions& o) {
     for (const DescriptorRange& range : archive.ranges()) species += range.name + ',', measure_names.push_back(range.name);
     species += "fitness,file\n";
     for (const auto& [cell, elite] : elites) {
+        if (StopSignals::requested()) {
+            std::cerr << "morphogen: stopped by signal " << StopSignals::signal_number() << "; " << out.string()
+                      << " holds some elites and no species.csv. Write them with the same command again\n";
+            return exit_code::interrupted;
+        }
         std::string stem = std::to_string(cell);
         stem = "cell_" + std::string(digits - stem.size(), '0') + stem;
         if (o.plant.engine_ready())

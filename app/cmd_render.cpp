@@ -1,5 +1,5 @@
 // `morphogen render MESH... -o SHEET.png [--columns C] [--size PX] [--own-scale]`:
-// draws meshes (OBJ/PLY/OFF/STL) side by side on one PNG contact sheet.
+// draws meshes (OBJ/PLY/OFF/STL/GLB) side by side on one PNG contact sheet.
 #include "app/commands.hpp"
 #include "core/io/mesh_io.hpp"
 #include "report/render.hpp"
@@ -42,7 +42,7 @@ int run_render(const RenderArgs& args) {
 void add_render_command(CLI::App& root, CommandRunner& selected) {
     auto args = std::make_shared<RenderArgs>();
     CLI::App* cmd = root.add_subcommand(
-        "render", "Draw meshes (OBJ, PLY, OFF or STL) on a PNG contact sheet, all at one scale");
+        "render", "Draw meshes (OBJ, PLY, OFF, STL or GLB) on a PNG contact sheet, all at one scale");
     // No ExistingFile check: read_mesh reports unreadable files as I/O errors (exit 3).
     cmd->add_option("meshes", args->meshes, "Mesh files, one cell each, in order")->required();
     cmd->add_option("-o,--output", args->output, "PNG file to write")->required();

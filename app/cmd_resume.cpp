@@ -62,10 +62,11 @@ int run_resume(const ResumeOptions& o) {
     const RunPaths paths = run_paths(o.dir);
     if (!std::filesystem::is_directory(paths.dir)) throw IoError("run directory " + o.dir + " does not exist");
     if (!std::filesystem::exists(paths.checkpoint)) {
+        // Nothing is refused: there is no checkpoint to read (exit 3, not 5).
         if (is_stopped_start(paths))
-            throw CheckpointError("no checkpoint in " + o.dir + ": the run stopped before its first checkpoint, " +
+            throw IoError("no checkpoint in " + o.dir + ": the run stopped before its first checkpoint, " +
                                   "so nothing was lost; start it again with: morphogen evolve CONFIG --out " + o.dir);
-        throw CheckpointError("no checkpoint in " + o.dir + " (" + paths.checkpoint.string() + " is missing)");
+        throw IoError("no checkpoint in " + o.dir + " (" + paths.checkpoint.string() + " is missing)");
     }
     RunLock lock(paths.dir);
     // Check everything before changing anything.

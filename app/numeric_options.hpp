@@ -6,6 +6,7 @@
 // value, naming the option and the value as typed (exit 2).
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
 #include <string>
@@ -18,6 +19,11 @@ inline void check_numeric_options(CLI::App& app) {
             const std::size_t first = text.find_first_not_of(" \t");
             if (first != std::string::npos && (text[first] == '-' || text[first] == '+'))
                 return "expected a whole number >= 0, got '" + text + "'";
+            // CLI11 would read a number past 2^64-1 as 2^64-1 (ERANGE unchecked).
+            errno = 0;
+            char* end = nullptr;
+            (void)std::strtoull(text.c_str(), &end, 10);
+            if (errno == ERANGE) return "expected a whole number up to 18446744073709551615, got '" + text + "'";
             return {};
         },
         "", "whole number");

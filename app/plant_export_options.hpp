@@ -20,7 +20,7 @@ namespace morphogen {
 
 inline void add_plant_export_options(CLI::App* command, PlantExportOptions& options) {
     command->add_option("--height", options.height_m,
-                        "Engine-ready GLB: origin at the foot, scaled to this many metres (default: 1 unit = 1 m)");
+                        "Engine-ready GLB: origin at the foot, scaled to this many metres, 0.001 to 10000 (default: 1 unit = 1 m)");
     command->add_option("--lods", options.lods,
                         "Engine-ready GLB with N levels of detail (1..8), child nodes plant_<id>_LOD0.., "
                         "each about half the triangles of the one before")

@@ -236,7 +236,7 @@ struct BreedServer::Impl {
         const fs::path file = options.three_dir / relative;
         std::error_code ec;
         if (!plain || !fs::is_regular_file(file, ec)) throw not_found("no such file: /assets/three/" + relative);
-        return {200, content_type(relative), read_file_bytes(file)};
+        return {200, content_type(relative), read_file_bytes(file, {std::uint64_t{64} << 20, "page assets"})};
     }
 
     // Why the request is refused before it is routed, or 0.

@@ -9,6 +9,7 @@
 #include "evolution/operators.hpp"
 #include "evolution/rng.hpp"
 #include "core/growth/genome_io.hpp"
+#include "core/io/mesh_file_types.hpp"
 #include "core/growth/network/network.hpp"
 #include "run/exports/plant_exports.hpp"
 
@@ -42,7 +43,7 @@ std::uint64_t plant_number(const std::string& id) {
 }
 
 json read_json_file(const fs::path& path) {
-    const std::string text = read_file_bytes(path);
+    const std::string text = read_file_bytes(path, memory_bound("session files (this machine's memory)"));
     try {
         return read_json_object(text);
     } catch (const JsonTextError& e) {
@@ -509,7 +510,7 @@ std::string BreedSession::mesh_glb(const std::string& id) {
     const BreedPlant& p = plant(id);
     const fs::path path = dir_ / "meshes" / (id + ".glb");
     if (!fs::exists(path)) write_file_atomically(path, growth_.grow(p.params).glb);
-    return read_file_bytes(path);
+    return read_file_bytes(path, {kMaxMeshFileBytes, "mesh files"});
 }
 
 std::string BreedSession::thumb_png(const std::string& id) {
@@ -517,7 +518,7 @@ std::string BreedSession::thumb_png(const std::string& id) {
     const BreedPlant& p = plant(id);
     const fs::path path = dir_ / "thumbs" / (id + ".png");
     if (!fs::exists(path)) write_png_atomically(growth_.grow(p.params).thumb, path);
-    return read_file_bytes(path);
+    return read_file_bytes(path, {std::uint64_t{64} << 20, "thumbnails"});
 }
 
 std::unique_ptr<BreedSession> BreedSession::resume(const fs::path& dir, BreedSessionOptions options) {

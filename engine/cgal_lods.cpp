@@ -2,7 +2,6 @@
 // plant_lods.hpp); CGAL stays in this file.
 #include "engine/plant_lods.hpp"
 
-#include "core/base/errors.hpp"
 #include "engine/cgal_lod_distance_cost.hpp"
 
 #include <CGAL/Orthogonal_k_neighbor_search.h>
@@ -147,10 +146,6 @@ constexpr Try kTries[] = {{Cost::quadric, kLodHalf},        {Cost::quadric, kLod
 
 PlantLods simplify_lods(MeshView lod0, int count) {
     if (count < 1) throw std::invalid_argument("simplify_lods: at least one level");
-    if ((lod0.faces.size() >> (count - 1)) < kMinLodFaces)
-        throw MeshError("--lods " + std::to_string(count) + ": " + std::to_string(count) + " levels of detail need at least " +
-                                    std::to_string(kMinLodFaces << (count - 1)) + " triangles; the plant has " +
-                                    std::to_string(lod0.faces.size()));
     PlantLods lods{.levels = {}, .distances = {0.0}, .requested = count};
     lods.levels.push_back(MeshArrays{{lod0.positions.begin(), lod0.positions.end()}, {lod0.faces.begin(), lod0.faces.end()}});
     if (count == 1) return lods;

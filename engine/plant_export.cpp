@@ -25,8 +25,8 @@ std::string shortest(double value) {
 double lod_percent(double fraction) { return std::round(fraction * 1e5) / 1e3; }
 
 std::string plant_export_problem(const PlantExportOptions& options) {
-    if (options.height_m && !(*options.height_m > 0 && *options.height_m <= kMaxPlantHeightMetres))
-        return "--height " + shortest(*options.height_m) + ": must be a number of metres in (0, 10000]";
+    if (options.height_m && !(*options.height_m >= kMinPlantHeightMetres && *options.height_m <= kMaxPlantHeightMetres))
+        return "--height " + shortest(*options.height_m) + ": must be a number of metres in [0.001, 10000]";
     if (options.lods < 0 || options.lods > kMaxPlantLods)
         return "--lods " + std::to_string(options.lods) + ": must be between 1 and " + std::to_string(kMaxPlantLods);
     if (!options.wind_presets.empty() && !options.wind)
@@ -68,10 +68,15 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
     ready.extras["lods_written"] = ready.levels.size();
     if (short_chain) {
         const int next = static_cast<int>(ready.levels.size());
-        std::cerr << "morphogen: " << ready.name << ": --lods " << options.lods << ": wrote " << next
-                  << " level(s); LOD" << next << " came no nearer than " << lod_percent(lods.refused_distance)
-                  << " % of the diagonal to LOD0 (bound " << lod_percent(lod_distance_bound(next))
-                  << " %) at half the triangles or a little more, so the chain stops at LOD" << next - 1 << "\n";
+        std::cerr << "morphogen: " << ready.name << ": --lods " << options.lods << ": wrote " << next << " level(s); ";
+        if (lods.refused_distance > 0)
+            std::cerr << "LOD" << next << " came no nearer than " << lod_percent(lods.refused_distance)
+                      << " % of the diagonal to LOD0 (bound " << lod_percent(lod_distance_bound(next))
+                      << " %) at half the triangles or a little more";
+        else
+            std::cerr << "LOD" << next << " could not be made (the plant has " << ready.levels.front().faces.size()
+                      << " triangles; a level keeps at least " << kMinLodFaces << ")";
+        std::cerr << ", so the chain stops at LOD" << next - 1 << "\n";
     }
     for (const MeshArrays& level : ready.levels) {
         if (!options.wind) ready.wind.emplace_back();

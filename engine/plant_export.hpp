@@ -29,6 +29,9 @@ struct PlantExportOptions {
 
 inline constexpr int kMaxPlantLods = 8;
 inline constexpr double kMaxPlantHeightMetres = 1e4;
+// 1 mm: far below any plant an engine shows, and far above the heights whose
+// scale underflows to a plant of zero size (1e-300 m).
+inline constexpr double kMinPlantHeightMetres = 1e-3;
 
 // Why `options` cannot be used, naming the option ("--height -1: must be a
 // positive number of metres"), or "" when they can.

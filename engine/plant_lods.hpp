@@ -42,9 +42,10 @@ struct PlantLods {
 // distance cost (cgal_lod_distance_cost.hpp) at both; the first whose
 // measured distance (hausdorff_distance) is within lod_distance_bound(i)
 // is kept. When none is, the chain stops there: fewer levels than asked (a
-// level that leaves the plant's shape is worse than none). Throws
-// std::invalid_argument when `count` < 1, MeshError (naming --lods) when
-// lod0 has fewer than kMinLodFaces * 2^(count - 1) faces.
+// level that leaves the plant's shape is worse than none); so does a level
+// that would have fewer than kMinLodFaces triangles (a small plant gets the
+// levels it can have, refused_distance 0). Throws std::invalid_argument when
+// `count` < 1.
 PlantLods simplify_lods(MeshView lod0, int count);
 
 // The two-sided (symmetric) Hausdorff distance between two closed meshes,

@@ -19,6 +19,18 @@ namespace {
 constexpr const char* kScatterFile = "scatter.glb";
 constexpr const char* kManifestFile = "manifest.json";
 
+// Whether `dir` holds a file a pack writes (plant_*.glb, scatter.glb) and no
+// manifest.json: what a stopped or killed `archive --pack` leaves.
+bool holds_incomplete_pack(const fs::path& dir) {
+    std::error_code ec;
+    if (fs::exists(dir / kManifestFile, ec)) return false;
+    for (const fs::directory_entry& entry : fs::directory_iterator(dir, ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name == kScatterFile || (name.rfind("plant_", 0) == 0 && name.find(".glb") != std::string::npos)) return true;
+    }
+    return false;
+}
+
 bool file_name_safe(const std::string& id) {
     return !id.empty() && std::all_of(id.begin(), id.end(), [](char c) {
         return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_' || c == '-';
@@ -33,8 +45,14 @@ SpeciesPack::SpeciesPack(fs::path dir, PackSource source, PlantExportOptions opt
     std::error_code ec;
     if (fs::exists(dir_, ec)) {
         if (!fs::is_directory(dir_, ec)) throw IoError(dir_.string() + ": exists and is not a directory");
+        if (holds_incomplete_pack(dir_))
+            throw IoError(dir_.string() + ": holds an incomplete species pack (plant files but no " + kManifestFile +
+                          ": a pack that was stopped or killed); remove the directory and run the same command "
+                          "again to write it whole");
         if (!fs::is_empty(dir_, ec))
             throw IoError(dir_.string() + ": exists and is not empty (a pack is written into a new or empty directory)");
+    } else {
+        made_dir_ = true;
     }
     fs::create_directories(dir_, ec);
     if (ec) throw IoError(dir_.string() + ": cannot create: " + ec.message());
@@ -66,6 +84,13 @@ void SpeciesPack::add(const GrownPlant& plant, const PlantRecord& record) {
     plants_.push_back(std::move(ready));
     entries_.push_back(std::move(entry));
     ids_.insert(record.id);
+}
+
+void SpeciesPack::abandon() noexcept {
+    std::error_code ec;
+    for (const EnginePlant& plant : plants_) fs::remove(dir_ / (plant.name + ".glb"), ec);
+    fs::remove(dir_ / kScatterFile, ec);
+    if (made_dir_) fs::remove(dir_, ec);  // only if empty: nothing but ours
 }
 
 std::string SpeciesPack::manifest_text() const {

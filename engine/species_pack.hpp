@@ -26,7 +26,8 @@ class SpeciesPack {
 public:
     // Makes `dir`. Throws ConfigError for bad options (plant_export_problem),
     // IoError when `dir` exists and is not an empty directory (a pack never
-    // mixes with other files) or cannot be made.
+    // mixes with other files; one holding a pack's files but no manifest is
+    // named an incomplete pack, with how to write it again) or cannot be made.
     SpeciesPack(std::filesystem::path dir, PackSource source, PlantExportOptions options);
 
     // Makes the plant engine-ready and writes <dir>/plant_<id>.glb
@@ -37,6 +38,10 @@ public:
     // Writes scatter.glb, then manifest.json (last: a pack with a manifest
     // is whole). Throws std::invalid_argument for a pack without plants.
     void finish();
+
+    // Removes what the pack wrote (its plant files, and `dir` when this pack
+    // made it): for a stop before finish(), so nothing half done is left.
+    void abandon() noexcept;
 
     // manifest.json's text for the plants added so far.
     std::string manifest_text() const;
@@ -50,6 +55,7 @@ private:
     std::vector<EnginePlant> plants_;     // each with its first level only (the scatter's)
     std::vector<nlohmann::json> entries_; // their manifest entries
     std::set<std::string> ids_;
+    bool made_dir_ = false;  // `dir` did not exist before
 };
 
 }  // namespace morphogen

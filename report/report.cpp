@@ -174,9 +174,9 @@ bool copy_three(Reporter& r, const fs::path& lib) {
             r.note("no 3-D viewer: " + from.string() + " is missing (install Debian's libjs-three)");
             return false;
         }
-        std::error_code ec;
-        fs::copy_file(from, lib / name, fs::copy_options::overwrite_existing, ec);
-        if (ec) throw IoError((lib / name).string() + ": cannot write: " + ec.message());
+        // Read and written, not fs::copy_file: its copy_file_range reports a
+        // file-size limit (EFBIG) as "Input/output error".
+        write_out(lib / name, read_file_bytes(from, {std::uint64_t{64} << 20, "page assets"}));
     }
     return true;
 }
@@ -260,7 +260,7 @@ std::vector<std::uint64_t> viewer_meshes(Reporter& r, const RunInputs& in) {
         const std::string key = export_name(generation);
         std::string bytes;
         try {
-            bytes = read_file_bytes(path);
+            bytes = read_file_bytes(path, {kMaxMeshFileBytes, "mesh files"});
         } catch (const std::exception& e) {
             r.note(std::string("skipped ") + e.what());
             continue;
@@ -280,8 +280,8 @@ std::vector<std::uint64_t> viewer_meshes(Reporter& r, const RunInputs& in) {
     return exported;
 }
 
-// Pictures of exported generations, from the .obj beside each .glb (the mesh
-// readers do not read GLB): each mesh read once, each thumbnail drawn once.
+// Pictures of exported generations, from the .obj beside each .glb (its exact
+// coordinates; the GLB holds floats): each mesh read once, each thumbnail drawn once.
 class Pictures {
 public:
     Pictures(Reporter& r, const RunInputs& in, std::vector<std::uint64_t> exported)

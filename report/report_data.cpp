@@ -52,10 +52,13 @@ std::optional<double> parse_cell(std::string_view cell, const fs::path& path, st
 }  // namespace
 
 NumericCsv read_numeric_csv(const fs::path& path, const std::vector<std::string>& required) {
-    if (!fs::is_regular_file(path)) throw IoError(path.string() + " is missing");
-    const std::string text = read_file_bytes(path);
+    std::error_code ec;
+    if (!fs::exists(fs::symlink_status(path, ec))) throw IoError(path.string() + " is missing");
+    const std::string text = read_file_bytes(path, memory_bound("run records (this machine's memory)"));
     const std::vector<std::string_view> lines = complete_lines(text);
-    if (lines.empty()) throw IoError(path.string() + ": empty (no header line)");
+    if (lines.empty() && text.empty()) throw IoError(path.string() + ": empty (no header line)");
+    if (lines.empty())
+        throw IoError(path.string() + ": no header line (" + std::to_string(text.size()) + " bytes without an end of line)");
     NumericCsv csv;
     for (std::string_view name : split_cells(lines[0])) {
         if (csv.columns.count(std::string(name))) fail(path, 1, "column " + std::string(name) + " appears twice");

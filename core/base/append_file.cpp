@@ -28,7 +28,7 @@ void write_all(int fd, std::string_view text, const std::filesystem::path& path)
 
 // The file's first `length` bytes, checked against `hash_hex`.
 std::string checked_prefix(const std::filesystem::path& path, std::uint64_t length, const std::string& hash_hex) {
-    std::string bytes = read_file_bytes(path);
+    std::string bytes = read_file_head(path, length);  // rows after them are not read
     if (bytes.size() < length)
         throw CheckpointError("checkpoint does not match " + path.filename().string() + ": the file has " +
                               std::to_string(bytes.size()) + " bytes, the checkpoint recorded " +

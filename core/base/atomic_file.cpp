@@ -6,8 +6,10 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
+#include <stdexcept>
 
 namespace morphogen {
 
@@ -54,8 +56,12 @@ int write_temporary(const std::filesystem::path& temp, std::span<const std::stri
 // For a target that is not a regular file (a device, a FIFO, a symlink to
 // one): written in place, since replacing it would be wrong.
 void write_in_place(const std::filesystem::path& path, std::span<const std::string_view> parts) {
-    Fd out(::open(path.c_str(), O_WRONLY | O_TRUNC | O_CLOEXEC));
+    // O_NONBLOCK: a FIFO nobody reads is refused (ENXIO), not waited on.
+    Fd out(::open(path.c_str(), O_WRONLY | O_TRUNC | O_NONBLOCK | O_CLOEXEC));
     if (out.fd < 0) throw IoError(path.string() + ": cannot open for writing: " + why(errno));
+    const int flags = ::fcntl(out.fd, F_GETFL);
+    if (flags < 0 || ::fcntl(out.fd, F_SETFL, flags & ~O_NONBLOCK) != 0)
+        throw IoError(path.string() + ": cannot open for writing: " + why(errno));
     for (const std::string_view bytes : parts)
         for (std::size_t written = 0; written < bytes.size();) {
             const ssize_t n = ::write(out.fd, bytes.data() + written, bytes.size() - written);
@@ -95,30 +101,72 @@ void write_file_atomically(const std::filesystem::path& path, std::span<const st
     sync_directory(path.parent_path());
 }
 
-std::string read_file_bytes(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) throw IoError(path.string() + ": cannot read: it is a directory");
-    Fd in(::open(path.c_str(), O_RDONLY | O_CLOEXEC));
+FileBound memory_bound(const char* of) {
+    const long pages = ::sysconf(_SC_PHYS_PAGES), page = ::sysconf(_SC_PAGESIZE);
+    const std::uint64_t memory = pages > 0 && page > 0 ? static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(page)
+                                                       : std::uint64_t{16} << 30;
+    return {memory, of};
+}
+
+namespace {
+const char* file_kind(mode_t mode) {
+    if (S_ISDIR(mode)) return "a directory";
+    if (S_ISFIFO(mode)) return "a FIFO";
+    if (S_ISCHR(mode)) return "a character device";
+    if (S_ISBLK(mode)) return "a block device";
+    if (S_ISSOCK(mode)) return "a socket";
+    return "not a file";
+}
+
+[[noreturn]] void refuse_size(const std::filesystem::path& path, const std::string& size, const FileBound& bound) {
+    throw IoError(path.string() + ": " + size + " bytes, more than the limit of " + std::to_string(bound.bytes) +
+                  " bytes for " + bound.of);
+}
+
+// Up to `limit` bytes of a regular file; with `bound`, a file of more is
+// refused (before anything is allocated when its size says so).
+std::string read_regular(const std::filesystem::path& path, std::uint64_t limit, const FileBound* bound) {
+    // O_NONBLOCK: opening a FIFO must not wait for a writer; the type is
+    // checked on the descriptor, so nothing can be swapped in between.
+    Fd in(::open(path.c_str(), O_RDONLY | O_NONBLOCK | O_NOCTTY | O_CLOEXEC));
     if (in.fd < 0) throw IoError(path.string() + ": cannot open for reading: " + why(errno));
-    // Read straight into the string (a checkpoint can be 150 MB): sized from
-    // fstat for a regular file, growing for anything else (a pipe, /dev/stdin).
     struct stat info {};
-    std::size_t capacity = 1 << 16;
-    if (::fstat(in.fd, &info) == 0 && S_ISREG(info.st_mode)) capacity = static_cast<std::size_t>(info.st_size) + 1;
-    std::string bytes(capacity, '\0');
-    std::size_t size = 0;
-    while (true) {
-        if (size == bytes.size()) bytes.resize(2 * bytes.size());
-        const ssize_t n = ::read(in.fd, bytes.data() + size, bytes.size() - size);
+    if (::fstat(in.fd, &info) != 0) throw IoError(path.string() + ": cannot read its size: " + why(errno));
+    if (!S_ISREG(info.st_mode))
+        throw IoError(path.string() + ": is not a regular file (it is " + file_kind(info.st_mode) + ")");
+    const auto size = static_cast<std::uint64_t>(info.st_size);
+    if (bound != nullptr && size > limit) refuse_size(path, std::to_string(size), *bound);
+    // Read straight into the string (a checkpoint can be 150 MB), sized from
+    // fstat; one byte more tells a file that grew past the limit since.
+    const std::uint64_t wanted = std::min(size, limit) + 1;
+    std::string bytes;
+    try {
+        bytes.resize(static_cast<std::size_t>(wanted));
+    } catch (const std::exception&) {  // std::bad_alloc, std::length_error
+        throw IoError(path.string() + ": not enough memory to read its " + std::to_string(size) + " bytes");
+    }
+    std::size_t got = 0;
+    while (got < bytes.size()) {
+        const ssize_t n = ::read(in.fd, bytes.data() + got, bytes.size() - got);
         if (n < 0) {
             if (errno == EINTR) continue;
             throw IoError(path.string() + ": read failed: " + why(errno));
         }
         if (n == 0) break;
-        size += static_cast<std::size_t>(n);
+        got += static_cast<std::size_t>(n);
     }
-    bytes.resize(size);
+    if (bound != nullptr && got > limit) refuse_size(path, "at least " + std::to_string(got), *bound);
+    bytes.resize(std::min<std::uint64_t>(got, limit));
     return bytes;
+}
+}  // namespace
+
+std::string read_file_bytes(const std::filesystem::path& path, FileBound bound) {
+    return read_regular(path, bound.bytes, &bound);
+}
+
+std::string read_file_head(const std::filesystem::path& path, std::uint64_t length) {
+    return read_regular(path, length, nullptr);
 }
 
 }  // namespace morphogen

@@ -299,22 +299,8 @@ json parse_json_text(const std::string& text, const std::string& source) {
     }
 }
 
-std::string read_document_file(const std::string& path) {
-    // A directory opens as a stream on Linux and then reads as empty.
-    std::error_code ignored;
-    if (std::filesystem::is_directory(path, ignored)) throw IoError(path + ": cannot read: it is a directory");
-    errno = 0;
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        const std::string reason = errno != 0 ? std::string(": ") + std::strerror(errno) : "";
-        throw IoError(path + ": cannot open for reading" + reason);
-    }
-    std::ostringstream buffer;
-    buffer << in.rdbuf();
-    if (in.bad()) throw IoError(path + ": read failed");
-    return std::move(buffer).str();
-}
+std::string read_document_file(const std::string& path, FileBound bound) { return read_file_bytes(path, bound); }
 
-json load_json_file(const std::string& path) { return parse_json_text(read_document_file(path), path); }
+json load_json_file(const std::string& path) { return parse_json_text(read_document_file(path, config_bound), path); }
 
 }  // namespace morphogen

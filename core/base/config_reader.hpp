@@ -5,6 +5,8 @@
 // and `finish()` reports keys nobody read as unknown, suggesting the nearest
 // known key. Modules (growth, network, fitness, evolution, run) each read their
 // own section with one of these; the caller throws once with all issues.
+#include "core/base/atomic_file.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <optional>
@@ -82,9 +84,14 @@ private:
 // well-formed JSON object within its limits is a ConfigError naming source,
 // line, column and key path.
 nlohmann::json parse_json_text(const std::string& text, const std::string& source);
-// A file's bytes; IoError (with the system's reason) if it cannot be read.
-std::string read_document_file(const std::string& path);
-// Read and parse a JSON file (IoError if unreadable, ConfigError if malformed).
+// A file's bytes, at most `bound`; IoError (with the system's reason) if it
+// cannot be read, is not a regular file or is larger (read_file_bytes).
+std::string read_document_file(const std::string& path, FileBound bound);
+// The most a config file may hold: far beyond any config the limits let run
+// (the largest, with every key and 8 emitters, is a few kilobytes).
+inline constexpr FileBound config_bound{std::uint64_t{16} << 20, "config files"};
+// Read and parse a config file, at most config_bound (IoError if unreadable,
+// ConfigError if malformed).
 nlohmann::json load_json_file(const std::string& path);
 
 }  // namespace morphogen

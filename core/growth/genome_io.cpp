@@ -67,7 +67,7 @@ void save_genome(const Genome& genome, const std::string& path) {
 Genome load_genome(const std::string& path) {
     json document;
     try {
-        document = read_json_object(read_document_file(path));
+        document = read_json_object(read_document_file(path, memory_bound("genome files (this machine's memory)")));
     } catch (const JsonTextError& e) {
         throw IoError(path + ": not a valid genome file: invalid JSON at " + e.what());
     }

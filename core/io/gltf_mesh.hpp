@@ -19,6 +19,8 @@ namespace morphogen::gltf {
 // Our meshes are Z-up; glTF is Y-up, right-handed: (x, y, z) -> (x, z, -y) is
 // a proper rotation, so orientation (and outward normals) are kept.
 inline Vec3 to_y_up(const Vec3& p) { return {p.x(), p.z(), -p.y()}; }
+// Its inverse: a glTF position back in morphogen's frame (z up).
+inline Vec3 from_y_up(const Vec3& p) { return {p.x(), -p.z(), p.y()}; }
 
 // An empty glTF 2.0 model whose asset names morphogen as its generator.
 tinygltf::Model new_model();

@@ -6,6 +6,7 @@
 // file (and line for text).
 #include "core/io/mesh_io.hpp"
 
+#include "core/base/atomic_file.hpp"
 #include "core/base/errors.hpp"
 #include "core/io/mesh_io_detail.hpp"
 
@@ -40,25 +41,7 @@ void write_file(const std::string& path, std::string_view bytes) {
 
 // The whole file, refused before reading when it is not a regular file (a
 // device or pipe could be endless) or larger than kMaxMeshFileBytes.
-std::string read_file(const std::string& path) {
-    std::error_code ec;
-    if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a mesh file");
-    const auto status = std::filesystem::status(path, ec);
-    if (!ec && std::filesystem::exists(status) && !std::filesystem::is_regular_file(status))
-        fail(path, "is not a regular file");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) fail(path, std::string("cannot open for reading: ") + std::strerror(errno));
-    const auto size = std::filesystem::file_size(path, ec);
-    if (ec) fail(path, "cannot read its size: " + ec.message());
-    if (size > kMaxMeshFileBytes)
-        fail(path, "file of " + std::to_string(size) + " bytes is larger than the limit of " +
-                       std::to_string(kMaxMeshFileBytes) + " bytes for mesh files");
-    std::string bytes(static_cast<std::size_t>(size), '\0');
-    in.read(bytes.data(), static_cast<std::streamsize>(size));
-    if (in.gcount() != static_cast<std::streamsize>(size) || in.bad())
-        fail(path, "read failed (the file changed while being read?)");
-    return bytes;
-}
+std::string read_file(const std::string& path) { return read_file_bytes(path, {kMaxMeshFileBytes, "mesh files"}); }
 
 void check_indices(MeshView mesh, const std::string& path) {
     const auto nv = static_cast<long long>(mesh.positions.size());
@@ -111,14 +94,13 @@ MeshArrays parse_mesh(std::string_view bytes, MeshFormat format, const std::stri
         case MeshFormat::off: return read_off(source, bytes);
         case MeshFormat::ply: return read_ply(source, bytes);
         case MeshFormat::stl: return read_stl(source, bytes);
-        case MeshFormat::glb: break;
+        case MeshFormat::glb: return read_glb(source, bytes);
     }
-    fail(source, "reading GLB is not supported (use OBJ, PLY, OFF or STL)");
+    fail(source, "unknown mesh format");
 }
 
 MeshArrays read_mesh(const std::string& path) {
     const MeshFormat format = mesh_format_from_path(path);
-    if (format == MeshFormat::glb) fail(path, "reading GLB is not supported (use OBJ, PLY, OFF or STL)");
     return parse_mesh(read_file(path), format, path);
 }
 

@@ -6,7 +6,8 @@
 // float32 by default (what WebGL viewers can draw; exact with
 // MeshWriteOptions::ply_double). OBJ, PLY and GLB carry smooth per-vertex
 // normals (vertex_normals.hpp); OFF stays plain OFF; STL has facet normals.
-// Readers: OBJ, OFF, PLY (ASCII and binary), STL (ASCII and binary).
+// Readers: OBJ, OFF, PLY (ASCII and binary), STL (ASCII and binary), GLB (its
+// first mesh: a plant's body, LOD0 of an engine export).
 // Every reader refuses, with an IoError naming the file (and line where there
 // is one), anything malformed or beyond the limits of mesh_file_types.hpp, before allocating
 // or looping over what a file merely declares (docs/limits.md, "Mesh files").
@@ -36,7 +37,7 @@ std::string encode_mesh(MeshView mesh, MeshFormat format, const MeshWriteOptions
 // vertex); does not check topology. Throws IoError naming `path`.
 MeshArrays read_mesh(const std::string& path);
 
-// read_mesh without the file: parses `bytes` in `format` (GLB is refused);
+// read_mesh without the file: parses `bytes` in `format`;
 // errors name `source`. Never crashes, hangs or allocates beyond the limits
 // of mesh_file_types.hpp, whatever the bytes (the fuzz targets call this).
 MeshArrays parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source);

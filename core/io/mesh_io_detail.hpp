@@ -136,5 +136,8 @@ MeshArrays read_obj(const std::string& path, std::string_view text);
 MeshArrays read_off(const std::string& path, std::string_view text);
 MeshArrays read_ply(const std::string& path, std::string_view text);
 MeshArrays read_stl(const std::string& path, std::string_view bytes);
+// The first mesh's triangles (every primitive of it), in its own coordinates
+// turned to z up.
+MeshArrays read_glb(const std::string& path, std::string_view bytes);
 
 }  // namespace morphogen::mesh_io_detail

@@ -1,6 +1,7 @@
 #include "run/config/experiment_config.hpp"
 
 #include "core/base/config_reader.hpp"
+#include "core/base/errors.hpp"
 #include "engine/plant_wind.hpp"
 #include "run/config/config_migration.hpp"
 
@@ -107,7 +108,12 @@ RunParams read_run_params(ObjectReader& reader) {
         ObjectReader options(glb, reader.path_of("export_glb"), reader.issues());
         PlantExportOptions& o = p.export_glb.emplace();
         // 0: a model unit is a metre; 0 levels: one mesh (as grow without --lods).
-        if (const double height = options.number("height", 0, 0, kMaxPlantHeightMetres); height > 0) o.height_m = height;
+        if (const double height = options.number("height", 0, 0, kMaxPlantHeightMetres); height > 0) {
+            o.height_m = height;
+            if (height < kMinPlantHeightMetres)
+                options.issues().add(options.path_of("height"),
+                                     json(height).dump() + " is below the least height, 0.001 (1 mm); 0 keeps one model unit a metre");
+        }
         o.lods = static_cast<int>(options.integer("lods", 0, 0, kMaxPlantLods));
         o.wind = options.boolean("wind", false);
         read_wind_presets(options, o);
@@ -133,11 +139,31 @@ std::string run_name_from_path(const std::string& path) {
     return stem.empty() ? "run" : stem;
 }
 
+namespace {
+// Command-line values on their own, first: a bad one is blamed on its option
+// ("--threads"), not on the key of the file it replaces.
+void check_overrides(const ConfigOverrides& o) {
+    const json run = with_overrides(json::object(), o).at("run");
+    ConfigIssues issues;
+    ObjectReader reader(&run, "", issues);
+    (void)read_run_params(reader);
+    std::string message;
+    for (const ConfigIssue& issue : issues.list()) {
+        if (!message.empty()) message += '\n';
+        message += "--" + issue.path + ": " + issue.message + " (it replaces run." + issue.path + ")";
+    }
+    if (!message.empty()) throw ConfigError(message);
+}
+}  // namespace
+
 ExperimentConfig read_experiment_config(const json& original, const std::string& source,
                                         const ConfigOverrides& overrides) {
     // The file must be valid as it is, keys the overrides replace included,
     // so that `validate` and `evolve --generations N` agree about it.
-    if (overrides.seed || overrides.generations || overrides.threads) read_experiment_config(original, source);
+    if (overrides.seed || overrides.generations || overrides.threads) {
+        check_overrides(overrides);
+        read_experiment_config(original, source);
+    }
     const json document = with_overrides(original, overrides);
     ConfigIssues issues;
     ObjectReader top(&document, "", issues);

@@ -6,6 +6,7 @@
 #include "run/searches/ga_search.hpp"
 #include "run/config/map_elites_config.hpp"
 #include "run/exports/plant_exports.hpp"
+#include "run/loop/stop_signals.hpp"
 
 #include <algorithm>
 #include <set>
@@ -50,7 +51,7 @@ std::vector<RunSpecies> run_species(const SearchState& search, std::uint64_t top
     return species;
 }
 
-std::size_t write_run_pack(const ExperimentConfig& config, const SearchState& search, const GenomeGrower& grower,
+std::optional<std::size_t> write_run_pack(const ExperimentConfig& config, const SearchState& search, const GenomeGrower& grower,
                            const PlantExportOptions& options, std::uint64_t top, const std::filesystem::path& dir) {
     const std::vector<RunSpecies> species = run_species(search, top);
     if (species.empty()) throw std::invalid_argument("the run has no valid genome to pack yet");
@@ -58,11 +59,21 @@ std::size_t write_run_pack(const ExperimentConfig& config, const SearchState& se
     SpeciesPack pack(dir, PackSource{.run = config.run.name, .algorithm = algorithm_name(config.algorithm),
                                      .measures = measures},
                      options);
-    for (const RunSpecies& one : species) {
-        const DatedGrowth grown = grow_dated(grower, one.individual->params);
-        pack.add(grown.plant(), birth_record(config, *one.individual, measures, one.cell));
+    try {
+        for (const RunSpecies& one : species) {
+            if (StopSignals::requested()) break;
+            const DatedGrowth grown = grow_dated(grower, one.individual->params);
+            pack.add(grown.plant(), birth_record(config, *one.individual, measures, one.cell));
+        }
+        if (StopSignals::requested()) {
+            pack.abandon();
+            return std::nullopt;
+        }
+        pack.finish();
+    } catch (...) {  // a full disk, a plant refused: no half pack left behind
+        pack.abandon();
+        throw;
     }
-    pack.finish();
     return pack.size();
 }
 

@@ -29,9 +29,11 @@ std::vector<RunSpecies> run_species(const SearchState& search, std::uint64_t top
 
 // Grows every species of run_species(search, top) with `grower` (each
 // vertex dated for the wind data) and writes the pack to `dir`; returns how
-// many species it holds. Throws as SpeciesPack, and std::invalid_argument
-// when the run has no species yet.
-std::size_t write_run_pack(const ExperimentConfig& config, const SearchState& search, const GenomeGrower& grower,
+// many species it holds. Between species it looks at StopSignals: on a stop
+// request it removes what it wrote (SpeciesPack::abandon) and returns
+// nothing; so it does before it throws. Throws as SpeciesPack, and std::invalid_argument when the run has
+// no species yet.
+std::optional<std::size_t> write_run_pack(const ExperimentConfig& config, const SearchState& search, const GenomeGrower& grower,
                            const PlantExportOptions& options, std::uint64_t top, const std::filesystem::path& dir);
 
 }  // namespace morphogen

@@ -5,8 +5,8 @@
 // (the last checkpoint stays valid either way). `evolve` and `resume` make one
 // first thing, before they read or create anything, so a signal during
 // start-up is a stop request like any other, never a death by the signal.
-// Only a signal in the first millisecond or two, while the system still loads
-// the program, ends it by the signal (before anything is written); a launcher
+// Only a signal in the first 10-25 ms, while the system still loads the
+// program and its libraries (before main), ends it by the signal (before anything is written); a launcher
 // that blocks SIGINT/SIGTERM across exec closes that gap too, since the
 // constructor unblocks them.
 namespace morphogen {

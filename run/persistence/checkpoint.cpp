@@ -259,9 +259,9 @@ void save_checkpoint(const std::filesystem::path& path, const RunState& state) {
 RunState load_checkpoint(const std::filesystem::path& path) {
     std::string text;
     try {
-        text = read_file_bytes(path);
-    } catch (const IoError& e) {
-        throw CheckpointError("checkpoint " + path.string() + " cannot be read: " + e.what());
+        text = read_file_bytes(path, memory_bound("checkpoints (this machine's memory)"));
+    } catch (const IoError& e) {  // not refused: a file that cannot be read (exit 3)
+        throw IoError("checkpoint cannot be read: " + std::string(e.what()));
     }
     const Envelope envelope = open_envelope(text, path.string());
     const json& content = envelope.content;

@@ -1,6 +1,7 @@
 #include "run/persistence/checkpoint_checks.hpp"
 
 #include "evolution/ga/population_stats.hpp"
+#include "evolution/emitters/emitter_registry.hpp"
 #include "evolution/execution/schedule.hpp"
 #include "core/growth/network/network.hpp"
 #include "run/loop/run_records.hpp"
@@ -78,6 +79,8 @@ struct LineageRow {
     std::size_t columns = 0;  // descriptor cells after the fitness
     bool valid = false;
     double fitness = 0.0;
+    std::optional<std::uint64_t> parent1, parent2;
+    std::vector<double> descriptors;  // a valid birth's descriptor cells, when they all read as numbers
 };
 
 std::uint64_t parse_u64(std::string_view cell, const std::string& where) {
@@ -105,6 +108,14 @@ std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t bi
         row.id = parse_u64(line.substr(0, line.find(',')), where);
         if (row.id != rows.size()) contradiction(where + " has id " + std::to_string(row.id) + ", not " +
                                                  std::to_string(rows.size()));
+        // id,birth,parent1,parent2,fitness,...: the parents are cells 2 and 3.
+        std::size_t cell = line.find(',', line.find(',') + 1) + 1;
+        for (std::optional<std::uint64_t>* parent : {&row.parent1, &row.parent2}) {
+            const std::size_t end_of_cell = line.find(',', cell);
+            if (const std::string_view text = line.substr(cell, end_of_cell - cell); !text.empty())
+                *parent = parse_u64(text, where);
+            cell = end_of_cell + 1;
+        }
         std::size_t fitness_start = 0;  // after the 4th comma
         for (int k = 0; k < 4; ++k) fitness_start = line.find(',', fitness_start) + 1;
         const std::string_view fitness = line.substr(fitness_start, line.find(',', fitness_start) - fitness_start);
@@ -114,6 +125,17 @@ std::vector<LineageRow> parse_lineage(std::string_view lineage, std::uint64_t bi
             if (error != std::errc() || stop != fitness.data() + fitness.size() || !std::isfinite(row.fitness))
                 contradiction(where + ": the fitness is not a number");
             row.valid = true;
+            std::size_t at = line.find(',', fitness_start);
+            for (std::size_t d = 0; d < row.columns && at != std::string_view::npos; ++d) {
+                const std::size_t next = line.find(',', at + 1);
+                const std::string_view text = line.substr(at + 1, next - at - 1);
+                double value = 0;
+                const auto [stop, error] = std::from_chars(text.data(), text.data() + text.size(), value);
+                if (text.empty() || error != std::errc() || stop != text.data() + text.size()) break;
+                row.descriptors.push_back(value);
+                at = next;
+            }
+            if (row.descriptors.size() != row.columns) row.descriptors.clear();
         }
         rows.push_back(row);
         pos = end + 1;
@@ -167,7 +189,8 @@ void check_last_row(const RunState& s, const ExperimentConfig& config, std::uint
 std::vector<RecordedBirth> recorded_births(const std::vector<LineageRow>& rows) {
     std::vector<RecordedBirth> recorded;
     recorded.reserve(rows.size());
-    for (const LineageRow& row : rows) recorded.push_back({row.valid, row.fitness});
+    for (const LineageRow& row : rows)
+        recorded.push_back({row.valid, row.fitness, row.parent1, row.parent2, row.descriptors});
     return recorded;
 }
 }  // namespace
@@ -192,7 +215,8 @@ void check_row_stats(const HistoryRow& row, std::size_t g, const PopulationStats
 
 BirthReplay birth_replay(const ExperimentConfig& config) {
     const std::vector<int> layers = config.network.layers();
-    return {config.evolution, config.run.seed, neuron_blocks(layers), parameter_count(layers)};
+    return {config.evolution, config.run.seed, neuron_blocks(layers), parameter_count(layers),
+            config.qd.emitters.empty() && config.algorithm == Algorithm::map_elites ? default_emitters() : config.qd.emitters};
 }
 
 // The pending births are exactly those the run's schedule keeps (births

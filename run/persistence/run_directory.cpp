@@ -72,13 +72,17 @@ void remove_file(const fs::path& path) {
     if (!fs::is_directory(fs::symlink_status(path, ec)) && !fs::remove(path, ec) && ec) fail(path, "cannot remove", ec);
 }
 
+// More than any header line of lineage.csv or archive.csv (a few names of
+// measures): a file longer holds rows, and only this much of it is read.
+constexpr std::size_t kHeaderBytes = 1 << 16;
+
 // Whether `path` is missing or holds a prefix of `header` (no data row).
 bool holds_no_rows(const fs::path& path, std::string_view header) {
     std::error_code ec;
     if (!fs::exists(fs::symlink_status(path, ec))) return true;
     if (!fs::is_regular_file(fs::symlink_status(path, ec))) return false;
     try {
-        const std::string bytes = read_file_bytes(path);
+        const std::string bytes = read_file_head(path, header.size() + 1);
         return bytes.size() <= header.size() && header.substr(0, bytes.size()) == bytes;
     } catch (const IoError&) {
         return false;
@@ -94,7 +98,7 @@ bool holds_no_lineage_rows(const fs::path& path) {
     std::error_code ec;
     if (!fs::is_regular_file(fs::symlink_status(path, ec))) return false;
     try {
-        const std::string bytes = read_file_bytes(path);
+        const std::string bytes = read_file_head(path, kHeaderBytes + 1);
         const std::size_t newline = bytes.find('\n');
         return bytes.size() > base.size() && bytes.compare(0, base.size(), base) == 0 && bytes[base.size()] == ',' &&
                (newline == std::string::npos || newline == bytes.size() - 1);
@@ -111,7 +115,7 @@ bool holds_no_archive_rows(const fs::path& path) {
     if (!fs::exists(fs::symlink_status(path, ec))) return true;
     if (!fs::is_regular_file(fs::symlink_status(path, ec))) return false;
     try {
-        const std::string bytes = read_file_bytes(path);
+        const std::string bytes = read_file_head(path, kHeaderBytes + 1);
         const std::string_view tail(archive_header_tail);
         return bytes.rfind("cell,", 0) == 0 && bytes.find('\n') == bytes.size() - 1 && bytes.size() >= tail.size() &&
                bytes.compare(bytes.size() - tail.size(), tail.size(), tail) == 0;

@@ -31,6 +31,9 @@ public:
     // pending birth's source state.
     void check_pending_parents(std::span<const Individual> pending, std::span<const RecordedBirth> recorded,
                                const BirthReplay& replay, const BirthSchedule& schedule) const override;
+    void check_replayed_parents(std::span<const Individual> pending, std::span<const RecordedBirth> recorded,
+                                const BirthReplay& replay, const BirthSchedule& schedule,
+                                std::span<const std::uint64_t> per_generation) const;
     std::unique_ptr<RunSearch> start(const ExperimentConfig& config, Problem& problem) override;
 };
 

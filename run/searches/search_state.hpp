@@ -4,6 +4,7 @@
 // (run_search.hpp's registry) writes, reads and checks its own state; the
 // checkpoint code seals it in the envelope and checks what every search has
 // alike (checkpoint_checks.hpp) through view().
+#include "evolution/emitters/emitters.hpp"
 #include "evolution/ga/ga_params.hpp"
 #include "evolution/genome_blob.hpp"
 #include "evolution/individual.hpp"
@@ -42,6 +43,8 @@ struct SearchView {
 struct RecordedBirth {
     bool valid = false;
     double fitness = 0.0;
+    std::optional<std::uint64_t> parent1, parent2;
+    std::vector<double> descriptors;  // its descriptor cells (none for an invalid birth or a 5-column lineage.csv)
 };
 
 // What re-drawing a birth's parents needs (docs/algorithm.md §8.2): the GA's
@@ -51,6 +54,7 @@ struct BirthReplay {
     std::uint64_t seed = 0;
     std::vector<Block> blocks;
     std::size_t dimension = 0;
+    std::vector<EmitterSpec> emitters;  // MAP-Elites' (resolved: never empty there)
 };
 
 class SearchState {

@@ -280,6 +280,84 @@ TEST_CASE("forged parents of pending births are refused: re-drawn from the popul
     check_same_results(tmp.path / "whole", run);
 }
 
+namespace {
+// A MAP-Elites run of population 10 with `keys` added to its config, stopped
+// at generation `stop` of `total`, and its checkpoint.
+struct StoppedElitesRun {
+    TempDir tmp{"me-pending"};
+    fs::path run = tmp.path / "run";
+    std::uint64_t total;
+    std::string good;
+    nlohmann::json content;
+    StoppedElitesRun(const std::string& keys, std::uint64_t stop, std::uint64_t total_generations)
+        : total(total_generations) {
+        write_text(tmp.path / "me.json", R"({"network": {"outputs": 4, "hidden": [5]},
+            "growth": {"steps": 12, "max_vertices": 300}, "fitness": {"type": "canopy", "height": 1, "cell": 0.1},
+            "descriptors": [{"measure": "height", "min": 0, "max": 3, "bins": 6},
+                            {"measure": "footprint", "min": 0, "max": 10, "bins": 5}],
+            "archive": {"type": "grid"}, )" + keys + "}");
+        REQUIRE(run_morphogen("evolve " + q(tmp.path / "me.json") + " --out " + q(run) + " --generations " +
+                              std::to_string(stop) + " --no-report")
+                    .code == 0);
+        good = read_text(run / "checkpoint.json");
+        content = checkpoint_content(good, "good");
+        REQUIRE(content["pending"].size() >= 2);
+    }
+    // The genuine checkpoint back, resumed to the end: the uninterrupted run's lineage.csv.
+    void finish() const {
+        write_text(run / "checkpoint.json", good);
+        REQUIRE(run_morphogen("resume " + q(run) + " --generations " + std::to_string(total) + " --no-report").code == 0);
+        REQUIRE(run_morphogen("evolve " + q(tmp.path / "me.json") + " --out " + q(tmp.path / "whole") +
+                              " --generations " + std::to_string(total) + " --no-report")
+                    .code == 0);
+        CHECK(read_text(run / "lineage.csv") == read_text(tmp.path / "whole" / "lineage.csv"));
+    }
+};
+}  // namespace
+
+TEST_CASE("forged parents of MAP-Elites' pending births are refused: a CMA emitter's children share its origin",
+          "[app][checkpoint][map_elites]") {
+    // The default emitters (two cma_me), stopped at generation 10.
+    const StoppedElitesRun made(R"("evolution": {"algorithm": "map_elites", "population": 10}, "run": {"seed": 3})",
+                                10, 20);
+    const nlohmann::json& pending = made.content["pending"];
+    // pending[0] and the first child of the other emitter: parents that
+    // both came before both sources, so only their emitters' states tell.
+    std::size_t other = 1;
+    while (other < pending.size() && pending[other]["parent1"] == pending[0]["parent1"]) ++other;
+    REQUIRE(other < pending.size());
+    check_edits_refused(made.run, made.content, {
+        {[](nlohmann::json& c) { c["pending"][0]["parent1"] = nullptr; }, "conceived from the same state of that emitter"},
+        {[](nlohmann::json& c) { c["pending"][0]["parent1"] = 0; }, "has parent"},
+        {[other](nlohmann::json& c) { std::swap(c["pending"][0]["parent1"], c["pending"][other]["parent1"]); },
+         "conceived from the same state of that emitter"},
+        {[](nlohmann::json& c) { c["pending"][0]["parent2"] = c["pending"][0]["parent1"]; }, "one parent, its origin"},
+    });
+    made.finish();
+}
+
+TEST_CASE("forged parents of pending gaussian and iso-line births are refused: re-drawn from the replayed archive",
+          "[app][checkpoint][map_elites]") {
+    const StoppedElitesRun made(R"("evolution": {"algorithm": "map_elites", "population": 10, "crossover": 0.5},
+        "emitters": [{"kind": "gaussian", "selection": "fitness_proportional"}, {"kind": "iso_line"}],
+        "run": {"seed": 5})", 6, 12);
+    const nlohmann::json& pending = made.content["pending"];
+    std::size_t other = 1;  // a birth with other parents than pending[0]'s
+    while (other < pending.size() && pending[other]["parent1"] == pending[0]["parent1"] &&
+           pending[other]["parent2"] == pending[0]["parent2"])
+        ++other;
+    REQUIRE(other < pending.size());
+    const std::string redrawn = "the archive lineage.csv records at its source state gives";
+    check_edits_refused(made.run, made.content, {
+        {[](nlohmann::json& c) { c["pending"][0]["parent1"] = nullptr; c["pending"][0]["parent2"] = nullptr; }, redrawn},
+        {[other](nlohmann::json& c) {
+             std::swap(c["pending"][0]["parent1"], c["pending"][other]["parent1"]);
+             std::swap(c["pending"][0]["parent2"], c["pending"][other]["parent2"]);
+         }, "pending["},
+    });
+    made.finish();
+}
+
 TEST_CASE("invalid births and the best are checked against lineage.csv", "[app][checkpoint]") {
     // Two generations of two: births 1 and 3 invalid, birth 2 the best.
     auto born = [](std::uint64_t id, std::optional<std::uint64_t> parent, double fitness) {

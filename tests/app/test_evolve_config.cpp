@@ -350,6 +350,15 @@ TEST_CASE("steady_state configs resolve the algorithm and no MAP-Elites keys", "
         R"({"descriptors": [{"measure": "height", "min": 0, "max": 1}], "archive": {"type": "grid"}})"));
     CHECK_THAT(errors, Catch::Contains("test.json: archive: used only when"));
     CHECK_THAT(errors, !Catch::Contains("descriptors"));
+    // schema.json refuses the same: archive or emitters without map_elites.
+    for (const char* ga : {R"({"archive": {"type": "grid"}})", R"({"emitters": [{"kind": "gaussian"}]})",
+                           R"({"evolution": {"algorithm": "steady_state"}, "emitters": []})"}) {
+        CAPTURE(ga);
+        CHECK_THAT(config_errors(json::parse(ga)), Catch::Contains("used only when"));
+        CHECK(schema_errors(json::parse(ga)) != "");
+    }
+    CHECK(schema_errors(json::parse(R"({"evolution": {"algorithm": "map_elites"}, "archive": {"type": "grid"},
+        "emitters": [{"kind": "gaussian"}], "descriptors": [{"measure": "height", "min": 0, "max": 1}]})")) == "");
     CHECK_THAT(config_errors(json{{"evolution", {{"algorithm", "map_elite"}}}}),
                Catch::Contains("evolution.algorithm: \"map_elite\" is not one of \"steady_state\", \"map_elites\" "
                                "(did you mean \"map_elites\"?)"));

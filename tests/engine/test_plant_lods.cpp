@@ -98,7 +98,10 @@ void check_lods(const GenomeGrower& grower, std::uint64_t first, int count, LodS
         INFO("genome " << seed << ", " << lod0.faces.size() << " triangles");
         ++stats.plants;
         if (lod0.faces.size() < kMinLodFaces << 2) {
-            CHECK_THROWS_AS(simplify_lods(lod0, 3), MeshError);
+            // The levels it can have: each of at least kMinLodFaces triangles.
+            const PlantLods small = simplify_lods(lod0, 3);
+            CHECK(small.short_chain());
+            for (const MeshArrays& level : small.levels) CHECK(level.faces.size() >= std::min(kMinLodFaces, lod0.faces.size()));
             ++stats.too_small;
             continue;
         }
@@ -221,12 +224,17 @@ TEST_CASE("a chain that cannot keep its bound stops, and the GLB and the manifes
     }
 }
 
-TEST_CASE("too many levels for a small plant are refused, naming --lods", "[engine][lods]") {
+TEST_CASE("a small plant gets the levels it can have, each of at least kMinLodFaces triangles", "[engine][lods]") {
     GrowthParams growth;
     growth.steps = 0;
     const GenomeGrower grower(NetworkParams{}, growth);
-    const GrowthState seed = grower.grow(testing::random_test_genome(grower.layers(), 1).params);
-    CHECK_THROWS_WITH(simplify_lods(seed.mesh.view(), 8), Catch::Contains("--lods 8"));
+    const GrowthState seed = grower.grow(testing::random_test_genome(grower.layers(), 1).params);  // 20 triangles
+    const PlantLods lods = simplify_lods(seed.mesh.view(), 8);
+    CHECK(lods.short_chain());
+    REQUIRE(lods.levels.size() >= 1);  // LOD0 at least; none under 8 triangles
+    CHECK(lods.levels[0].faces.size() == 20);
+    for (const MeshArrays& level : lods.levels) CHECK(level.faces.size() >= kMinLodFaces);
+    CHECK(lods.levels.size() == lods.distances.size());
     CHECK_THROWS_AS(simplify_lods(seed.mesh.view(), 0), std::invalid_argument);
 }
 

@@ -116,12 +116,14 @@ TEST_CASE("OBJ, PLY (doubles) and OFF round trips are bit-exact and keep order",
     }
 }
 
-TEST_CASE("float32 PLY and STL read back as the float-rounded mesh", "[mesh_io]") {
+TEST_CASE("float32 PLY, GLB and STL read back as the float-rounded mesh", "[mesh_io]") {
     TempDir tmp;
     const MeshArrays cube = awkward_cube();
     MeshArrays rounded = cube;
     for (Vec3& p : rounded.positions) p = p.cast<float>().cast<double>();
     require_identical(rounded, read_mesh(write_and_name(cube, tmp.file("f.ply"))));
+    // GLB: the first mesh, turned from glTF's y up back to z up.
+    require_identical(rounded, read_mesh(write_and_name(cube, tmp.file("f.glb"))));
     // STL has no shared vertices: the reader welds equal corners back, in
     // order of first appearance, which is the original order for this cube.
     const MeshArrays stl = read_mesh(write_and_name(cube, tmp.file("f.stl")));
@@ -132,6 +134,25 @@ TEST_CASE("float32 PLY and STL read back as the float-rounded mesh", "[mesh_io]"
             INFO("face " << f << " corner " << k);
             CHECK(stl.positions[stl.faces[f][k]] == rounded.positions[cube.faces[f][k]]);
         }
+}
+
+TEST_CASE("a GLB cut short or with any byte changed is read or refused naming the file", "[mesh_io]") {
+    TempDir tmp;
+    const std::string bytes = slurp(write_and_name(awkward_cube(), tmp.file("f.glb")));
+    CHECK_THROWS_WITH(parse_mesh(std::string_view(bytes).substr(0, bytes.size() - 8), MeshFormat::glb, "cut.glb"),
+                      Catch::Contains("cut.glb"));
+    // Every byte changed: read or refused with an IoError, never a crash or another exception.
+    std::size_t refused = 0;
+    for (std::size_t at = 0; at < bytes.size(); ++at) {
+        std::string bad = bytes;
+        bad[at] = static_cast<char>(bad[at] ^ 0x5a);
+        try {
+            (void)parse_mesh(bad, MeshFormat::glb, "bad.glb");
+        } catch (const IoError&) {
+            ++refused;
+        }
+    }
+    CHECK(refused > 0);
 }
 
 TEST_CASE("OBJ writes 17 significant digits, smooth normals and v//vn faces", "[mesh_io]") {
@@ -431,7 +452,7 @@ TEST_CASE("every malformed file gives an IoError naming the file and the problem
     fs::create_directories(tmp.file("dir.obj"));
     require_read_error(tmp.file("dir.obj"), "directory");
     require_read_error(tmp.write("x.stl", ""), "not an STL file");
-    require_read_error(tmp.write("x.glb", ""), "reading GLB is not supported");
+    require_read_error(tmp.write("x.glb", ""), "not a valid GLB");
 
     // OBJ
     require_read_error(tmp.write("num.obj", "v 0 0 0\nv 1 x 0\n"), ":2: bad number 'x'");
