@@ -320,6 +320,36 @@ struct Rows {
     }
 };
 
+// Each fragment of one band > 0 (`begin`..`end`) takes as its lineage the
+// node of the band below it touches most (the smallest on a tie); a fragment
+// touching none, the lineage nearest to it in steps through the band (-1 if
+// none is).
+void assign_lineages(std::vector<int>::const_iterator begin, std::vector<int>::const_iterator end, const Rows& below,
+                     const Rows& same, const std::vector<int>& node_of, std::vector<int>& lineage) {
+    std::deque<int> queue;
+    std::vector<int> touched;
+    for (auto it = begin; it != end; ++it) {
+        const int f = *it;
+        touched.clear();
+        for (int j = below.start[f]; j < below.start[f + 1]; ++j) touched.push_back(node_of[below.entries[j]]);
+        std::sort(touched.begin(), touched.end());
+        int best_count = 0;
+        for (std::size_t j = 0; j < touched.size();) {
+            std::size_t run = j;
+            while (run < touched.size() && touched[run] == touched[j]) ++run;
+            if (static_cast<int>(run - j) > best_count) best_count = static_cast<int>(run - j), lineage[f] = touched[j];
+            j = run;
+        }
+        if (lineage[f] >= 0) queue.push_back(f);
+    }
+    while (!queue.empty()) {
+        const int f = queue.front();
+        queue.pop_front();
+        for (int j = same.start[f]; j < same.start[f + 1]; ++j)
+            if (const int g = same.entries[j]; lineage[g] < 0) lineage[g] = lineage[f], queue.push_back(g);
+    }
+}
+
 // The nodes, band by band (the root, all of band 0, first; then by band and
 // first fragment). A fragment touching nodes of the band below takes the one
 // it touches most as its lineage; the others take the lineage nearest to
@@ -345,31 +375,7 @@ Skeleton nodes_of(const Fragments& fragments, const Touching& touching, double w
         const int band = fragments.band[by_band[first]];
         std::size_t last = first;
         while (last < by_band.size() && fragments.band[by_band[last]] == band) ++last;
-        std::deque<int> queue;
-        for (std::size_t i = first; i < last; ++i) {
-            const int f = by_band[i];
-            if (band == 0) {
-                lineage[f] = -1;
-                continue;
-            }
-            std::vector<int> touched;
-            for (int j = below.start[f]; j < below.start[f + 1]; ++j) touched.push_back(node_of[below.entries[j]]);
-            std::sort(touched.begin(), touched.end());
-            int best_count = 0;
-            for (std::size_t j = 0; j < touched.size();) {
-                std::size_t run = j;
-                while (run < touched.size() && touched[run] == touched[j]) ++run;
-                if (static_cast<int>(run - j) > best_count) best_count = static_cast<int>(run - j), lineage[f] = touched[j];
-                j = run;
-            }
-            if (lineage[f] >= 0) queue.push_back(f);
-        }
-        while (!queue.empty()) {  // the nearest lineage through the band
-            const int f = queue.front();
-            queue.pop_front();
-            for (int j = same.start[f]; j < same.start[f + 1]; ++j)
-                if (const int g = same.entries[j]; lineage[g] < 0) lineage[g] = lineage[f], queue.push_back(g);
-        }
+        if (band > 0) assign_lineages(by_band.begin() + first, by_band.begin() + last, below, same, node_of, lineage);
         // A node: a connected piece of one lineage, where the pieces of a
         // lineage that meet another one (the two sides of a loop's cut) are one.
         std::map<int, int> border;  // lineage -> a fragment of it next to another lineage
