@@ -24,6 +24,7 @@ public:
     explicit PrunedTree(const Skeleton& skeleton) : s_(skeleton), alive_(skeleton.nodes.size(), true) {}
 
     const SkeletonNode& node(int n) const { return s_.nodes[n]; }
+    double band_width() const { return s_.band_width; }
     int size() const { return static_cast<int>(s_.nodes.size()); }
     bool alive(int n) const { return alive_[n]; }
     void remove(int n) { alive_[n] = false; }
@@ -47,23 +48,25 @@ struct Branch {
     std::vector<int> nodes;
     double length = 0.0, thickness = 0.0, tube_length = 0.0;
     // What the slenderness rules compare with the thickness (architecture.hpp).
-    double reach() const { return std::min(length, tube_length); }
+    double reach() const { return std::min(length, 2.0 * tube_length); }
 };
 
 void measure_branch(const PrunedTree& tree, Branch& branch) {
-    Vec3 previous = tree.node(branch.fork).centroid;
-    std::vector<double> diameters;
+    // The length along the surface: how much farther from the base its end lies than its fork.
+    branch.length = tree.node(branch.nodes.back()).distance - tree.node(branch.fork).distance;
+    std::vector<double> along;  // the same for each node
     double area = 0.0;
     for (int n : branch.nodes) {
-        branch.length += (tree.node(n).centroid - previous).norm();
-        previous = tree.node(n).centroid;
-        diameters.push_back(tree.node(n).diameter);
+        along.push_back(tree.node(n).distance - tree.node(branch.fork).distance);
         area += tree.node(n).area;
     }
-    if (diameters.size() >= 2 && tree.is_fork(branch.nodes.back())) diameters.pop_back();  // the next fork's saddle
-    auto middle = diameters.begin() + static_cast<std::ptrdiff_t>(diameters.size() / 2);
-    std::nth_element(diameters.begin(), middle, diameters.end());
-    branch.thickness = *middle;
+    std::size_t count = branch.nodes.size();
+    if (count >= 2 && tree.is_fork(branch.nodes.back())) --count;  // the next fork's saddle
+    // The stem's girth: the narrowest node of the branch's first half (at
+    // least one node), so neither a crown at its end nor a lump counts.
+    branch.thickness = std::numeric_limits<double>::infinity();
+    for (std::size_t i = 0; i < count && (i == 0 || along[i] <= 0.5 * branch.length); ++i)
+        branch.thickness = std::min(branch.thickness, tree.node(branch.nodes[i]).diameter);
     branch.tube_length = branch.thickness > 0 ? area / (std::numbers::pi * branch.thickness) : 0.0;
 }
 
@@ -92,7 +95,7 @@ void prune(PrunedTree& tree, double slenderness) {
         for (int n = 0; n < tree.size(); ++n) {
             if (!tree.is_leaf(n)) continue;
             const std::optional<Branch> branch = branch_to(tree, n);
-            if (branch && branch->reach() < slenderness * branch->thickness)
+            if (branch && branch->reach() < std::max(slenderness * branch->thickness, 0.5 * tree.band_width()))
                 doomed.insert(doomed.end(), branch->nodes.begin(), branch->nodes.end());
         }
         for (int n : doomed) tree.remove(n), pruned = true;

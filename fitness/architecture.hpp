@@ -4,17 +4,21 @@
 // a branching tree from a stalk under one crown.
 //
 // - A branch is the skeleton path from a fork (a node with 2+ children) to
-//   the next fork or an end node; its length = the sum of the distances
-//   between consecutive node centroids (the fork's included), its thickness =
-//   the median diameter of its nodes after the fork (the end fork left out
-//   when there are others); its tube length = the area of those nodes /
-//   (pi x thickness), the length of a tube of that area and thickness. The
-//   rules below use its reach = the smaller of the two: a sliver that
-//   Dijkstra's metric leaves as a local maximum of distance (a few triangles
-//   at the rim of a ring) lies a ring's radius away from the ring's centroid
-//   but has almost no area.
+//   the next fork or an end node. Its length = how much farther from the
+//   base (the skeleton's distance d) its last node reaches than its fork:
+//   the length along the surface, whichever way the branch leaves. Its
+//   thickness = the smallest diameter among its nodes within the first half
+//   of its length (at least its first node; the end fork left out when
+//   there are others): the girth of its stem, so that neither a crown
+//   carried at its end nor a lump on it counts. Its tube length = the area
+//   of its nodes / (pi x thickness). The rules below use its reach = the
+//   smaller of its length and twice its tube length: a sliver that the
+//   distance leaves as a local maximum (a few triangles at the rim of a
+//   ring) has almost no area, while a limb's tube length is most of its
+//   length (less its tapering end).
 // - Pruning: a branch to an end node whose reach is below tip_slenderness x
-//   its thickness is noise (a bump, a lobe), not a tip: it is removed, and
+//   its thickness, or below half a band width (one median edge: finer than
+//   the mesh shows), is noise (a bump, a lobe), not a tip: it is removed, and
 //   removal repeats until every end branch stands (a fork left with one
 //   child is a fork no more).
 // - tips: the end nodes other than the root; limbs: the branches with

@@ -5,9 +5,11 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <numeric>
 #include <queue>
@@ -78,7 +80,24 @@ double median_edge_length(const MeshArrays& mesh, const Edges& edges) {
     return *middle;
 }
 
-// Dijkstra over the edges from every vertex with z <= base_z.
+// The arrival at c of a front that reaches a at da and b at db, travelling
+// straight from a point of the segment ab (d linear along it); infinite when
+// the straight path would leave through a or b (the edges cover those).
+double through_triangle(const Vec3& a, const Vec3& b, const Vec3& c, double da, double db) {
+    const Vec3 e = b - a, w = c - a;
+    const double e2 = e.squaredNorm(), delta = db - da;
+    if (!(e2 > 0) || delta * delta >= e2) return kUnreached;
+    const double foot = w.dot(e) / e2;                            // c's foot on the line ab, as a parameter
+    const double h2 = std::max(0.0, w.squaredNorm() - foot * foot * e2);  // c's squared distance from the line
+    const double g = std::sqrt(h2 / (1.0 - delta * delta / e2));  // from the crossing point to c
+    const double t = foot - delta * g / e2;
+    if (!(t > 0.0 && t < 1.0)) return kUnreached;
+    return da + t * delta + g;
+}
+
+// Distances from every vertex with z <= base_z: Dijkstra whose updates also
+// cross triangles (from a settled edge to the opposite corner), so a front
+// travels straight over a triangle instead of zigzagging along its edges.
 std::vector<double> base_distances(const MeshArrays& mesh, const Edges& edges, double base_z) {
     const std::size_t n = mesh.positions.size();
     std::vector<int> start(n + 1, 0), next(edges.edges.size() * 2);
@@ -86,20 +105,39 @@ std::vector<double> base_distances(const MeshArrays& mesh, const Edges& edges, d
     std::partial_sum(start.begin(), start.end(), start.begin());
     std::vector<int> fill(start.begin(), start.end() - 1);
     for (const EdgeFaces& e : edges.edges) next[fill[e.a]++] = e.b, next[fill[e.b]++] = e.a;
+    std::vector<int> face_start(n + 1, 0), corner_face(mesh.faces.size() * 3);
+    for (const Face& f : mesh.faces)
+        for (int v : f) ++face_start[v + 1];
+    std::partial_sum(face_start.begin(), face_start.end(), face_start.begin());
+    std::vector<int> face_fill(face_start.begin(), face_start.end() - 1);
+    for (std::size_t f = 0; f < mesh.faces.size(); ++f)
+        for (int v : mesh.faces[f]) corner_face[face_fill[v]++] = static_cast<int>(f);
 
     std::vector<double> d(n, kUnreached);
+    std::vector<bool> settled(n, false);
     using Entry = std::pair<double, int>;
     std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
     for (std::size_t v = 0; v < n; ++v)
         if (mesh.positions[v].z() <= base_z) d[v] = 0.0, queue.emplace(0.0, static_cast<int>(v));
+    auto offer = [&](int u, double du) {
+        if (du < d[u]) d[u] = du, queue.emplace(du, u);
+    };
     while (!queue.empty()) {
         const auto [dv, v] = queue.top();
         queue.pop();
-        if (dv > d[v]) continue;
+        if (dv > d[v] || settled[v]) continue;
+        settled[v] = true;
         for (int i = start[v]; i < start[v + 1]; ++i) {
             const int u = next[i];
-            const double du = dv + (mesh.positions[u] - mesh.positions[v]).norm();
-            if (du < d[u]) d[u] = du, queue.emplace(du, u);
+            if (!settled[u]) offer(u, dv + (mesh.positions[u] - mesh.positions[v]).norm());
+        }
+        for (int i = face_start[v]; i < face_start[v + 1]; ++i) {
+            const Face& f = mesh.faces[corner_face[i]];
+            for (int k = 0; k < 3; ++k) {
+                const int x = f[k], u = f[(k + 1) % 3];
+                if (x == v || u == v || !settled[x] || settled[u]) continue;
+                offer(u, through_triangle(mesh.positions[v], mesh.positions[x], mesh.positions[u], dv, d[x]));
+            }
         }
     }
     return d;
@@ -216,11 +254,15 @@ Fragments clip_into_bands(const MeshArrays& mesh, const std::vector<double>& d, 
 int lowest_band_holding(double t) { return static_cast<int>(std::ceil(t)) - 1; }
 int highest_band_holding(double t) { return static_cast<int>(std::floor(t)); }
 
-// Joins the fragments of one band that touch, and lists the touching
-// fragments of consecutive bands as (lower, upper) pairs.
-std::vector<std::pair<int, int>> join_fragments(UnionFind& pieces, const Fragments& fragments, const MeshArrays& mesh,
-                                                const Edges& edges, const std::vector<double>& t) {
-    std::vector<std::pair<int, int>> contacts;
+// The fragments that touch: pairs of one band (`same`) and pairs of
+// consecutive bands (`across`, as (lower, upper)).
+struct Touching {
+    std::vector<std::pair<int, int>> same, across;
+};
+
+Touching touching_fragments(const Fragments& fragments, const MeshArrays& mesh, const Edges& edges,
+                            const std::vector<double>& t) {
+    Touching out;
     // Triangles across an edge, in every band the edge reaches.
     for (const EdgeFaces& e : edges.edges) {
         if (e.count < 2 || t[e.a] == kUnreached) continue;
@@ -231,7 +273,7 @@ std::vector<std::pair<int, int>> join_fragments(UnionFind& pieces, const Fragmen
                 const int fragment = fragments.of(edges.faces[i], k);
                 if (fragment < 0) continue;
                 if (anchor < 0) anchor = fragment;
-                else pieces.join(anchor, fragment);
+                else out.same.emplace_back(anchor, fragment);
             }
         }
     }
@@ -247,77 +289,135 @@ std::vector<std::pair<int, int>> join_fragments(UnionFind& pieces, const Fragmen
                 if (fragment < 0) continue;
                 int& a = anchor[v][k == k_hi ? 1 : 0];
                 if (a < 0) a = fragment;
-                else pieces.join(a, fragment);
+                else out.same.emplace_back(a, fragment);
             }
         }
     }
     for (const auto& [lower, upper] : anchor)
-        if (lower >= 0 && upper >= 0) contacts.emplace_back(lower, upper);
+        if (lower >= 0 && upper >= 0) out.across.emplace_back(lower, upper);
     // A triangle crossing a boundary touches both sides.
     for (std::size_t f = 0; f < mesh.faces.size(); ++f)
         for (int k = fragments.band_lo[f]; k < fragments.band_hi[f]; ++k)
-            contacts.emplace_back(fragments.of(static_cast<int>(f), k), fragments.of(static_cast<int>(f), k + 1));
-    // All of band 0 is the root.
-    int base = -1;
-    for (std::size_t i = 0; i < fragments.band.size(); ++i) {
-        if (fragments.band[i] != 0) continue;
-        if (base < 0) base = static_cast<int>(i);
-        else pieces.join(base, static_cast<int>(i));
-    }
-    return contacts;
+            out.across.emplace_back(fragments.of(static_cast<int>(f), k), fragments.of(static_cast<int>(f), k + 1));
+    return out;
 }
 
-// One node per joined piece (the root first, then by band and first
-// fragment), each with the parent it touches most in the band below.
-Skeleton nodes_of(UnionFind& pieces, const Fragments& fragments, const std::vector<std::pair<int, int>>& contacts,
-                  double w) {
-    const int count = static_cast<int>(fragments.band.size());
-    std::vector<int> roots;
-    for (int i = 0; i < count; ++i)
-        if (pieces.find(i) == i) roots.push_back(i);
-    std::stable_sort(roots.begin(), roots.end(),
-                     [&](int a, int b) { return fragments.band[a] < fragments.band[b]; });
-    std::vector<int> node_of_root(count, -1);
-    for (std::size_t n = 0; n < roots.size(); ++n) node_of_root[roots[n]] = static_cast<int>(n);
+// Compressed lists: the entries of row r are at [start[r], start[r + 1]).
+struct Rows {
+    std::vector<int> start, entries;
+    Rows(std::size_t rows, const std::vector<std::pair<int, int>>& pairs, bool both_ways) : start(rows + 1, 0) {
+        for (const auto& [a, b] : pairs) {
+            ++start[a + 1];
+            if (both_ways) ++start[b + 1];
+        }
+        std::partial_sum(start.begin(), start.end(), start.begin());
+        entries.resize(static_cast<std::size_t>(start.back()));
+        std::vector<int> fill(start.begin(), start.end() - 1);
+        for (const auto& [a, b] : pairs) {
+            entries[fill[a]++] = b;
+            if (both_ways) entries[fill[b]++] = a;
+        }
+    }
+};
 
-    std::vector<Piece> sums(roots.size());
-    for (int i = 0; i < count; ++i) sums[node_of_root[pieces.find(i)]].add(fragments.pieces[i]);
+// Each fragment of one band > 0 (`begin`..`end`) takes as its lineage the
+// node of the band below it touches most (the smallest on a tie); a fragment
+// touching none, the lineage nearest to it in steps through the band (-1 if
+// none is).
+void assign_lineages(std::vector<int>::const_iterator begin, std::vector<int>::const_iterator end, const Rows& below,
+                     const Rows& same, const std::vector<int>& node_of, std::vector<int>& lineage) {
+    std::deque<int> queue;
+    std::vector<int> touched;
+    for (auto it = begin; it != end; ++it) {
+        const int f = *it;
+        touched.clear();
+        for (int j = below.start[f]; j < below.start[f + 1]; ++j) touched.push_back(node_of[below.entries[j]]);
+        std::sort(touched.begin(), touched.end());
+        int best_count = 0;
+        for (std::size_t j = 0; j < touched.size();) {
+            std::size_t run = j;
+            while (run < touched.size() && touched[run] == touched[j]) ++run;
+            if (static_cast<int>(run - j) > best_count) best_count = static_cast<int>(run - j), lineage[f] = touched[j];
+            j = run;
+        }
+        if (lineage[f] >= 0) queue.push_back(f);
+    }
+    while (!queue.empty()) {
+        const int f = queue.front();
+        queue.pop_front();
+        for (int j = same.start[f]; j < same.start[f + 1]; ++j)
+            if (const int g = same.entries[j]; lineage[g] < 0) lineage[g] = lineage[f], queue.push_back(g);
+    }
+}
+
+// The nodes, band by band (the root, all of band 0, first; then by band and
+// first fragment). A fragment touching nodes of the band below takes the one
+// it touches most as its lineage; the others take the lineage nearest to
+// them through their band; a node is a connected piece of one lineage, and
+// its parent is that lineage. So a piece where two branches touch (a loop) is
+// split between them, not made the crown of one.
+Skeleton nodes_of(const Fragments& fragments, const Touching& touching, double w) {
+    const int count = static_cast<int>(fragments.band.size());
+    const Rows same(fragments.band.size(), touching.same, true);
+    std::vector<std::pair<int, int>> downward;  // (upper, lower)
+    for (const auto& [lower, upper] : touching.across)
+        if (fragments.band[upper] == fragments.band[lower] + 1) downward.emplace_back(upper, lower);
+    const Rows below(fragments.band.size(), downward, false);
+
+    std::vector<int> by_band(count);
+    std::iota(by_band.begin(), by_band.end(), 0);
+    std::stable_sort(by_band.begin(), by_band.end(), [&](int a, int b) { return fragments.band[a] < fragments.band[b]; });
+
+    std::vector<int> node_of(count, -1), lineage(count, -1);
+    std::vector<int> parents;
+    UnionFind pieces(fragments.band.size());
+    for (std::size_t first = 0; first < by_band.size();) {
+        const int band = fragments.band[by_band[first]];
+        std::size_t last = first;
+        while (last < by_band.size() && fragments.band[by_band[last]] == band) ++last;
+        if (band > 0) assign_lineages(by_band.begin() + first, by_band.begin() + last, below, same, node_of, lineage);
+        // A node: a connected piece of one lineage, where the pieces of a
+        // lineage that meet another one (the two sides of a loop's cut) are one.
+        std::map<int, int> border;  // lineage -> a fragment of it next to another lineage
+        for (std::size_t i = first; i < last; ++i) {
+            const int f = by_band[i];
+            for (int j = same.start[f]; j < same.start[f + 1]; ++j) {
+                const int g = same.entries[j];
+                if (band == 0 || lineage[g] == lineage[f]) pieces.join(f, g);
+                else if (const auto [it, fresh] = border.emplace(lineage[f], f); !fresh) pieces.join(it->second, f);
+            }
+        }
+        if (band == 0)
+            for (std::size_t i = first + 1; i < last; ++i) pieces.join(by_band[first], by_band[i]);
+        std::map<int, int> node_of_piece;
+        for (std::size_t i = first; i < last; ++i) {  // by_band holds a band's fragments in increasing order
+            const int f = by_band[i];
+            const auto [it, fresh] = node_of_piece.emplace(pieces.find(f), static_cast<int>(parents.size()));
+            if (fresh) parents.push_back(lineage[f]);
+            node_of[f] = it->second;
+        }
+        first = last;
+    }
+
+    std::vector<Piece> sums(parents.size());
+    for (int i = 0; i < count; ++i) sums[node_of[i]].add(fragments.pieces[i]);
     Skeleton skeleton;
     skeleton.band_width = w;
-    skeleton.nodes.resize(roots.size());
-    for (std::size_t n = 0; n < roots.size(); ++n) {
+    skeleton.nodes.resize(parents.size());
+    for (std::size_t n = 0; n < parents.size(); ++n) {
         SkeletonNode& node = skeleton.nodes[n];
         const Piece& s = sums[n];
-        node.band = fragments.band[roots[n]];
         node.area = s.area;
         node.centroid = s.area > 0 ? Vec3(s.moment / s.area) : Vec3::Zero();
         const double span = (s.t_hi - s.t_lo) * w;
         node.diameter = span > 0 ? s.level_length / (std::numbers::pi * span) : 0.0;
+        node.distance = std::max(0.0, s.t_hi * w);
     }
-
-    std::vector<std::array<int, 2>> links;  // (upper node, lower node), once per contact
-    for (const auto& [lower, upper] : contacts) {
-        const int a = node_of_root[pieces.find(upper)], b = node_of_root[pieces.find(lower)];
-        if (skeleton.nodes[a].band == skeleton.nodes[b].band + 1) links.push_back({a, b});
-    }
-    std::sort(links.begin(), links.end());
-    for (std::size_t i = 0; i < links.size();) {  // per upper node, the lower node of the longest run
-        std::size_t j = i, best_count = 0;
-        int best = -1;
-        while (j < links.size() && links[j][0] == links[i][0]) {
-            std::size_t run = j;
-            while (run < links.size() && links[run] == links[j]) ++run;
-            if (run - j > best_count) best_count = run - j, best = links[j][1];
-            j = run;
-        }
-        skeleton.nodes[links[i][0]].parent = best;
-        i = j;
-    }
-    // Every node above band 0 touches the band below (each vertex but the
-    // base's has a nearer neighbour); a rounding tie that breaks this joins the root.
+    for (int i = 0; i < count; ++i) skeleton.nodes[node_of[i]].band = fragments.band[i];
+    // A node above band 0 that touches nothing below (a rounding tie) joins the root.
     for (std::size_t n = 1; n < skeleton.nodes.size(); ++n) {
         SkeletonNode& node = skeleton.nodes[n];
-        if (node.parent < 0) node.parent = 0;
+        node.parent = parents[n] >= 0 ? parents[n] : 0;
         skeleton.nodes[node.parent].children.push_back(static_cast<int>(n));
     }
     return skeleton;
@@ -364,9 +464,7 @@ Skeleton level_set_skeleton(MeshView mesh, const SkeletonParams& params) {
     std::vector<double> t(d.size());
     for (std::size_t v = 0; v < d.size(); ++v) t[v] = d[v] == kUnreached ? kUnreached : d[v] / w;
     const Fragments fragments = clip_into_bands(welded, d, w);
-    UnionFind pieces(fragments.band.size());
-    const auto contacts = join_fragments(pieces, fragments, welded, edges, t);
-    Skeleton skeleton = nodes_of(pieces, fragments, contacts, w);
+    Skeleton skeleton = nodes_of(fragments, touching_fragments(fragments, welded, edges, t), w);
     skeleton.base_height = base_height, skeleton.zmin = zmin, skeleton.zmax = zmax;
     return skeleton;
 }

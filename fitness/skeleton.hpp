@@ -5,19 +5,29 @@
 //
 // - vertices with equal coordinates are merged, triangles left with a
 //   repeated vertex dropped (files that split vertices still connect);
-// - the base = the vertices with z <= zmin + base_height; d(v) = Dijkstra
-//   distance over mesh edges (their lengths) from the base, linear over each
+// - the base = the vertices with z <= zmin + base_height; d(v) = the distance
+//   from the base by Dijkstra's algorithm over the edges whose updates also
+//   cross each triangle in a straight line (from a point of a settled edge,
+//   d linear along it, to the opposite corner), so a front does not zigzag
+//   along the edges of coarse or stretched triangles; d is linear over each
 //   triangle; vertices the base does not reach are left out;
 // - band k = {d in [k w, (k+1) w)}; each triangle is clipped to every band it
 //   crosses; two clipped pieces of one band are one node when their
 //   triangles share an edge or a vertex whose d lies in the band (closed),
 //   so a node is exactly a connected piece of the surface within the band;
 //   all of band 0 is one node, the root;
-// - nodes of bands k and k+1 touch when a triangle crosses from one to the
-//   other or a vertex on the boundary lies on both; each node of band k > 0
-//   keeps as its parent the touching node of band k-1 with the most
-//   contacts, so a loop (a handle, two branches touching) is cut and the
-//   skeleton is a tree rooted at the base.
+// - pieces of bands k and k+1 touch when a triangle crosses from one to the
+//   other or a vertex on the boundary lies on both. Band by band, a clipped
+//   piece of band k > 0 that touches nodes of band k-1 takes the one it
+//   touches most as its lineage, and the other pieces of its band the
+//   lineage nearest to them (in steps through the band); a node is a
+//   connected piece of one lineage (the pieces of one lineage that meet
+//   another lineage count as one: the two sides of a cut loop), and its
+//   parent is its lineage. So where two branches touch (a loop: crowns that
+//   overlap), the band is split between them rather than made the crown of
+//   one, and the skeleton is a tree rooted at the base. On a surface without
+//   loops every connected piece of a band has one lineage: the pieces are
+//   the nodes.
 //
 // A node's diameter is its perimeter / pi, the perimeter being the mean
 // length of the level curves through the piece (by the coarea formula,
@@ -51,6 +61,7 @@ struct SkeletonNode {
     Vec3 centroid = Vec3::Zero();  // area-weighted centroid of the piece
     double area = 0.0;
     double diameter = 0.0;  // perimeter / pi (see above); 0 for a piece of no area
+    double distance = 0.0;  // the largest d on the piece
     int parent = -1;        // -1 for the root
     std::vector<int> children;
 };

@@ -3,6 +3,7 @@
 #include "core/growth/growth_params.hpp"
 #include "core/io/mesh_io.hpp"
 #include "tests/fitness/mesh_builders.hpp"
+#include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>
@@ -15,30 +16,12 @@
 #include <filesystem>
 #include <fstream>
 #include <random>
-#include <sys/wait.h>
 
 using namespace morphogen;
 using nlohmann::json;
 
-namespace {
-struct Result {
-    int code;
-    std::string out;
-};
-
-// Runs the morphogen executable with `arguments` (shell syntax); stderr joins stdout.
-Result morphogen_run(const std::string& arguments) {
-    const std::string command = std::string("\"") + MORPHOGEN_EXE + "\" " + arguments + " 2>&1";
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe != nullptr);
-    std::string out;
-    char buffer[4096];
-    while (std::fgets(buffer, sizeof buffer, pipe) != nullptr) out += buffer;
-    const int status = pclose(pipe);
-    return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, out};
-}
-
-}  // namespace
+using Result = testing::CliRun;
+using testing::morphogen_run;
 
 TEST_CASE("score --mesh prints the fitness and every metric", "[fitness][cli]") {
     const testing::TempDir tmp("score");
