@@ -203,7 +203,7 @@ TEST_CASE("command-line numbers out of range are blamed on the option, not on th
     }
 }
 
-TEST_CASE("--height below 1 mm is refused in grow, packs and configs", "[app][files][engine]") {
+TEST_CASE("heights below 1 mm (--height) are refused in grow, packs and configs", "[app][files][engine]") {
     const FinishedRun made;
     const CliResult grow = run_morphogen("grow --random 3 --steps 20 -o " + q(made.tmp.path / "h.glb") + " --height 1e-300");
     INFO(grow.output);
