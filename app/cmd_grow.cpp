@@ -5,6 +5,7 @@
 #include "app/resource_options.hpp"
 #include "core/base/errors.hpp"
 #include "engine/birth_steps.hpp"
+#include "engine/plant_colour.hpp"
 #include "engine/plant_export.hpp"
 #include "fitness/descriptors.hpp"
 #include "core/growth/genome_io.hpp"
@@ -83,15 +84,19 @@ int run_grow(const GrowOptions& options) {
     GrowthWorkspace workspace;
     GrowthFrames recorded;
     BirthSteps births(grower.seed().mesh.num_vertices());  // for --wind
-    const StepObserver dating = options.plant.wind ? births.observer() : StepObserver{};
+    const StepObserver dating = options.plant.wind || options.plant.colour ? births.observer() : StepObserver{};
     const GrowthState state = animating ? grow_with_frames(grower, network, frames, workspace, recorded, dating)
                                         : grower.grow(network, workspace, dating);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    if (options.plant.engine_ready())
+    if (options.plant.engine_ready()) {
+        const std::vector<float> colours =
+            options.plant.colour ? growth_colours(state, births.steps(), config.growth) : std::vector<float>{};
         write_plant_glb(options.output,
-                        GrownPlant{.mesh = state.mesh.view(), .birth_steps = births.steps(), .steps = state.steps_done},
+                        GrownPlant{.mesh = state.mesh.view(), .birth_steps = births.steps(), .steps = state.steps_done,
+                                   .colours = colours},
                         grown_record(config, genome, state.mesh.view()), options.plant);
+    }
     else
         write_mesh(state.mesh.view(), options.output, options.mesh_options);
     if (!options.save_genome.empty()) save_genome(genome, options.save_genome);

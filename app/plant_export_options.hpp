@@ -6,6 +6,7 @@
 //   --wind      the _WIND vertex attribute (engine/plant_wind.hpp)
 //   --wind-preset NAME[,NAME]  also copies of it where engines read them
 //               (color, uv, godot; repeatable; needs --wind)
+//   --colour    COLOR_0 from growth history (engine/plant_colour.hpp)
 // Header-only: app/ holds at most 15 source files.
 #include "engine/plant_export.hpp"
 
@@ -27,6 +28,9 @@ inline void add_plant_export_options(CLI::App* command, PlantExportOptions& opti
         ->check(CLI::Range(1, kMaxPlantLods));
     command->add_flag("--wind", options.wind,
                       "Engine-ready GLB with wind data: the _WIND vertex attribute (bend, flutter, phase, stiffness)");
+    command->add_flag("--colour", options.colour,
+                      "Engine-ready GLB with vertex colours from growth history and the genome's hue "
+                      "(COLOR_0, docs/algorithm.md section 13); the material turns white");
     command
         ->add_option_function<std::vector<std::string>>(
             "--wind-preset",
@@ -56,7 +60,7 @@ inline void check_plant_export_options(const PlantExportOptions& options, const 
     std::string ext = std::filesystem::path(glb_path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext != ".glb") {
-        const char* option = options.lods > 0 ? "--lods" : options.wind ? "--wind" : "--height";
+        const char* option = options.lods > 0 ? "--lods" : options.wind ? "--wind" : options.colour ? "--colour" : "--height";
         throw CLI::ValidationError(std::string(option) + ": writes an engine-ready GLB, so the output must be .glb, not '" +
                                    glb_path + "'");
     }

@@ -38,6 +38,28 @@ void check_size(std::size_t got, std::size_t want, const char* what) {
 
 }  // namespace
 
+std::vector<float> colour_rgba(std::span<const Rgb> colours) {
+    std::vector<float> out;
+    out.reserve(4 * colours.size());
+    for (const Rgb& c : colours) out.insert(out.end(), {c[0], c[1], c[2], 1.0f});
+    return out;
+}
+
+std::vector<float> growth_colours(const GrowthState& state, std::span<const int> birth_steps,
+                                  const GrowthParams& params) {
+    std::vector<double> exposure;
+    if (params.mode == GrowthMode::branching)
+        exposure = final_exposure(state.mesh, ExposureParams{.cell = params.exposure_cell,
+                                                             .depth = params.exposure_depth,
+                                                             .full_shade = params.exposure_full_shade});
+    return colour_rgba(plant_colours({.positions = state.mesh.positions(),
+                                      .birth_steps = birth_steps,
+                                      .steps = state.steps_done,
+                                      .active = state.active,
+                                      .exposure = exposure,
+                                      .tint = genome_tint(state)}));
+}
+
 std::vector<double> final_exposure(const TriMesh& mesh, const ExposureParams& params) {
     ExposureWorkspace workspace;
     std::vector<double> exposure;

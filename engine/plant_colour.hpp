@@ -35,6 +35,15 @@ double genome_tint(const GrowthState& state);
 // active or exposure (when given) do not have one entry per vertex.
 std::vector<Rgb> plant_colours(const ColourInputs& inputs);
 
+// RGBA floats (A = 1), 4 per vertex: what GrownPlant::colours and COLOR_0 take.
+std::vector<float> colour_rgba(std::span<const Rgb> colours);
+
+// The colours of a grown plant as GrownPlant::colours takes them (RGBA):
+// §13 with the branching mode's growth state and final exposure, or the
+// paper mode's height, and the genome's tint.
+std::vector<float> growth_colours(const GrowthState& state, std::span<const int> birth_steps,
+                                  const GrowthParams& params);
+
 // For the branching mode: exposure of the final mesh with the growth's
 // exposure parameters (§5.9), computed here whether or not growth used it.
 std::vector<double> final_exposure(const TriMesh& mesh, const ExposureParams& params);

@@ -32,6 +32,9 @@ std::string plant_export_problem(const PlantExportOptions& options) {
     if (!options.wind_presets.empty() && !options.wind)
         return "--wind-preset " + std::string(wind_preset_name(options.wind_presets.front())) +
                ": copies the wind data, so it needs --wind";
+    if (options.colour && std::ranges::find(options.wind_presets, WindPreset::color) != options.wind_presets.end())
+        return "--colour and --wind-preset color both write COLOR_0: use --wind-preset uv or godot with --colour "
+               "(the wind data stays in _WIND)";
     return {};
 }
 
@@ -40,7 +43,7 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
     PlacedPlant placed = place_plant(plant.mesh, options.height_m);
 
     EnginePlant ready{.name = "plant_" + record.id, .extras = record_json(record), .levels = {}, .wind = {},
-                      .wind_presets = options.wind_presets, .lod_nodes = options.lods > 0, .lod_distances = {},
+                      .wind_presets = options.wind_presets, .colours = {}, .lod_nodes = options.lods > 0, .lod_distances = {},
                       .height_m = placed.height_m};
     ready.extras["generator"] = "morphogen";
     ready.extras["height_m"] = placed.height_m;
@@ -55,9 +58,18 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
     }
     std::vector<float> wind;
     if (options.wind) wind = plant_wind(placed.mesh.view(), plant.birth_steps, plant.steps);
+    std::vector<float> colours;
+    if (options.colour) {
+        if (plant.colours.size() != 4 * plant.mesh.positions.size())
+            throw std::invalid_argument("--colour: " + std::to_string(plant.colours.size()) + " colour floats for " +
+                                        std::to_string(plant.mesh.positions.size()) + " vertices (4 each)");
+        colours.assign(plant.colours.begin(), plant.colours.end());
+        ready.extras["colour"] = "COLOR_0";
+    }
     if (options.lods == 0) {
         ready.levels.push_back(std::move(placed.mesh));
         ready.wind.push_back(std::move(wind));
+        ready.colours.push_back(std::move(colours));
         return ready;
     }
     PlantLods lods = simplify_lods(placed.mesh.view(), options.lods);
@@ -82,19 +94,27 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
         if (!options.wind) ready.wind.emplace_back();
         else if (ready.wind.empty()) ready.wind.push_back(wind);
         else ready.wind.push_back(transfer_wind(placed.mesh.view(), wind, level.view()));
+        // Colours go to the levels as the wind does: each vertex takes LOD0's nearest.
+        if (!options.colour) ready.colours.emplace_back();
+        else if (ready.colours.empty()) ready.colours.push_back(colours);
+        else ready.colours.push_back(transfer_wind(placed.mesh.view(), colours, level.view()));
     }
     return ready;
 }
 
 std::string plant_glb_bytes(const EnginePlant& plant, const std::string& source) {
-    PlantGlb glb{.name = plant.name, .extras = plant.extras, .levels = {}, .lod_nodes = plant.lod_nodes};
+    const bool coloured = !plant.colours.empty() && !plant.colours.front().empty();
+    PlantGlb glb{.name = plant.name, .extras = plant.extras, .levels = {}, .lod_nodes = plant.lod_nodes,
+                 .vertex_colours = coloured};
     for (std::size_t i = 0; i < plant.levels.size(); ++i) {
         nlohmann::json extras;
         if (plant.lod_nodes) extras = {{"triangles", plant.levels[i].faces.size()}};
         if (plant.lod_nodes && i > 0) extras["hausdorff_percent"] = lod_percent(plant.lod_distances[i]);
+        std::vector<VertexAttribute> attributes = wind_preset_attributes(plant.wind[i], plant.wind_presets);
+        if (coloured) attributes.push_back({.name = "COLOR_0", .components = 4, .values = plant.colours[i]});
         glb.levels.push_back(PlantLevel{.mesh = plant.levels[i].view(),
                                         .wind = plant.wind[i],
-                                        .attributes = wind_preset_attributes(plant.wind[i], plant.wind_presets),
+                                        .attributes = std::move(attributes),
                                         .extras = extras});
     }
     return plant_glb_bytes(glb, source);

@@ -22,9 +22,10 @@ struct PlantExportOptions {
     int lods = 0;                    // --lods: 0 writes one mesh, N >= 1 writes LOD0 .. LOD(N-1)
     bool wind = false;               // --wind: the _WIND vertex attribute
     std::vector<WindPreset> wind_presets{};  // --wind-preset: copies of _WIND where engines read them (needs wind)
+    bool colour = false;             // --colour: COLOR_0 from growth history (docs/algorithm.md §13)
 
     // Whether any option asks for the engine-ready GLB rather than the plain one.
-    bool engine_ready() const { return height_m.has_value() || lods > 0 || wind; }
+    bool engine_ready() const { return height_m.has_value() || lods > 0 || wind || colour; }
 };
 
 inline constexpr int kMaxPlantLods = 8;
@@ -44,6 +45,9 @@ struct GrownPlant {
     // seed's), one per vertex, and the steps the growth did.
     std::span<const int> birth_steps;
     int steps = 0;
+    // For --colour: 4 linear floats per vertex (RGBA, A = 1), colour_rgba()
+    // of engine/plant_colour.hpp.
+    std::span<const float> colours{};
 };
 
 // A plant made engine-ready and not yet laid out in glTF: what its GLB holds,
@@ -54,6 +58,7 @@ struct EnginePlant {
     std::vector<MeshArrays> levels;        // placed: one mesh without --lods, else LOD0 .. LOD(N-1)
     std::vector<std::vector<float>> wind;  // per level: 4 floats per vertex with --wind, else empty
     std::vector<WindPreset> wind_presets;  // --wind-preset: written beside each level's _WIND
+    std::vector<std::vector<float>> colours;  // per level: COLOR_0, 4 floats per vertex with --colour, else empty
     bool lod_nodes = false;                // --lods: levels as child nodes plant_<id>_LOD<i>
     // --lods: per level, its two-sided Hausdorff distance from LOD0 over
     // LOD0's diagonal (plant_lods.hpp); levels may be fewer than asked.
@@ -77,7 +82,8 @@ std::string plant_glb_bytes(const EnginePlant& plant, const std::string& source)
 
 // The GLB bytes. Throws ConfigError for bad options (plant_export_problem),
 // MeshError for a plant that cannot be placed or scaled,
-// std::invalid_argument for --wind without one birth step per vertex, IoError naming
+// std::invalid_argument for --wind without one birth step per vertex or
+// --colour without 4 colour floats per vertex, IoError naming
 // `source` when it cannot be encoded.
 std::string plant_glb_bytes(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options,
                             const std::string& source);

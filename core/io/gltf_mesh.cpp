@@ -79,11 +79,12 @@ void set_root_scene(tinygltf::Model& model, int root) {
     model.defaultScene = static_cast<int>(model.scenes.size()) - 1;
 }
 
-int add_plant_material(tinygltf::Model& model) {
+int add_plant_material(tinygltf::Model& model, bool white) {
     tinygltf::Material material;
     material.name = "plant";
     material.doubleSided = true;  // grown meshes are viewed from inside too (open canopies)
     material.pbrMetallicRoughness.baseColorFactor = {0.33, 0.62, 0.24, 1.0};
+    if (white) material.pbrMetallicRoughness.baseColorFactor = {1.0, 1.0, 1.0, 1.0};
     material.pbrMetallicRoughness.metallicFactor = 0.0;
     material.pbrMetallicRoughness.roughnessFactor = 0.8;
     model.materials.push_back(material);

@@ -28,8 +28,9 @@ tinygltf::Model new_model();
 // Makes node `root` the one scene of `model`, and that scene the default.
 void set_root_scene(tinygltf::Model& model, int root);
 
-// Adds the double-sided green material every morphogen glTF uses; returns its index.
-int add_plant_material(tinygltf::Model& model);
+// Adds the double-sided green material every morphogen glTF uses; returns its
+// index. `white`: base colour white, for meshes whose COLOR_0 is the colour.
+int add_plant_material(tinygltf::Model& model, bool white = false);
 
 // The bytes add_mesh appends to the buffer for `mesh`.
 std::size_t mesh_data_bytes(MeshView mesh);

@@ -22,7 +22,7 @@ std::string plant_glb_bytes(const PlantGlb& plant, const std::string& source) {
     if (plant.levels.size() > 1 && !plant.lod_nodes)
         throw std::invalid_argument("plant_glb_bytes: several levels need LOD nodes");
     tinygltf::Model model = gltf::new_model();
-    const int material = gltf::add_plant_material(model);
+    const int material = gltf::add_plant_material(model, plant.vertex_colours);
 
     tinygltf::Node root;
     root.name = plant.name;

@@ -39,6 +39,9 @@ struct PlantGlb {
     // true: node `name` holds one child node per level, `name_LOD<i>`, each
     // with its mesh `name_LOD<i>`; false: one level, node and mesh `name`.
     bool lod_nodes = false;
+    // true: the levels carry COLOR_0 (engine/plant_colour.hpp), so the
+    // material's base colour is white and the vertex colour is the colour.
+    bool vertex_colours = false;
 };
 
 // The .glb bytes. Throws std::invalid_argument for no levels, several levels

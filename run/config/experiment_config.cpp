@@ -117,6 +117,10 @@ RunParams read_run_params(ObjectReader& reader) {
         o.lods = static_cast<int>(options.integer("lods", 0, 0, kMaxPlantLods));
         o.wind = options.boolean("wind", false);
         read_wind_presets(options, o);
+        // Read only when given, so the resolved config of runs without it keeps its bytes.
+        if (options.raw("colour") != nullptr) o.colour = options.boolean("colour", false);
+        if (const std::string problem = plant_export_problem(o); o.colour && !problem.empty())
+            options.issues().add(options.path_of("colour"), problem);
         options.finish();
         reader.set_resolved("export_glb", options.resolved());
     }

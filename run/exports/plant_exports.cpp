@@ -1,6 +1,7 @@
 #include "run/exports/plant_exports.hpp"
 
 #include "engine/birth_steps.hpp"
+#include "engine/plant_colour.hpp"
 #include "core/growth/genome_io.hpp"
 #include "core/io/mesh_io.hpp"
 
@@ -34,7 +35,11 @@ DatedGrowth grow_dated(const GenomeGrower& grower, std::span<const double> param
 void export_engine_plant(const GenomeGrower& grower, std::span<const double> params, const PlantRecord& record,
                          const PlantExportOptions& options, const std::filesystem::path& stem) {
     const DatedGrowth grown = grow_dated(grower, params);
-    write_plant_glb(stem.string() + ".glb", grown.plant(), record, options);
+    GrownPlant plant = grown.plant();
+    const std::vector<float> colours =
+        options.colour ? growth_colours(grown.state, grown.birth_steps, grower.params()) : std::vector<float>{};
+    plant.colours = colours;
+    write_plant_glb(stem.string() + ".glb", plant, record, options);
     write_mesh(grown.state.mesh.view(), stem.string() + ".obj");
     save_genome(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())},
                 stem.string() + ".genome.json");

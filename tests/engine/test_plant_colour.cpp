@@ -3,6 +3,10 @@
 // the tips, and a tint that follows the genome.
 #include "engine/birth_steps.hpp"
 #include "engine/plant_colour.hpp"
+#include "engine/plant_export.hpp"
+#include "core/base/errors.hpp"
+#include "tests/engine/glb_reader.hpp"
+#include "tests/engine/grow_dated.hpp"
 #include "core/growth/genome_grower.hpp"
 #include "tests/support/test_genomes.hpp"
 
@@ -97,6 +101,59 @@ TEST_CASE("plant colours: the tint shifts the hue, and bad sizes are refused", "
     const std::vector<int> short_births{0};
     in.birth_steps = short_births;
     CHECK_THROWS_AS(plant_colours(in), std::invalid_argument);
+}
+
+TEST_CASE("--colour writes COLOR_0 on every level with a white material; the colour preset is refused with it",
+          "[colour]") {
+    const testing::Grown grown = grow_dated(7, 50);
+    const GrowthState& state = grown.state;
+    const std::vector<Rgb> colours = plant_colours(
+        {.positions = state.mesh.positions(), .birth_steps = grown.births, .steps = 50, .active = state.active,
+         .exposure = {}, .tint = genome_tint(state)});
+    const std::vector<float> rgba = colour_rgba(colours);
+    PlantRecord record;
+    record.id = "c";
+    record.genome_hash = "0123456789abcdef";
+    const GrownPlant plant{.mesh = state.mesh.view(), .birth_steps = grown.births, .steps = 50, .colours = rgba};
+    for (const int lods : {0, 3}) {
+        PlantExportOptions options;
+        options.lods = lods;
+        options.colour = true;
+        const tinygltf::Model model = test::parse_glb(plant_glb_bytes(plant, record, options, "test"));
+        CHECK(model.materials.at(0).pbrMetallicRoughness.baseColorFactor == std::vector<double>{1, 1, 1, 1});
+        REQUIRE(!model.meshes.empty());
+        for (const tinygltf::Mesh& mesh : model.meshes) {
+            const auto& attributes = mesh.primitives.at(0).attributes;
+            REQUIRE(attributes.count("COLOR_0") == 1);
+            const tinygltf::Accessor& acc = model.accessors.at(attributes.at("COLOR_0"));
+            CHECK(acc.type == TINYGLTF_TYPE_VEC4);
+            CHECK(acc.componentType == TINYGLTF_COMPONENT_TYPE_FLOAT);
+            CHECK(acc.count == model.accessors.at(attributes.at("POSITION")).count);
+            const std::vector<float> values = test::accessor_floats(model, attributes.at("COLOR_0"));
+            for (const float x : values) REQUIRE((x >= 0.0f && x <= 1.0f));
+            if (lods == 0) CHECK(values == rgba);
+        }
+    }
+    // Without --colour the material keeps its green and no COLOR_0 is written.
+    PlantExportOptions plain;
+    plain.lods = 2;
+    const tinygltf::Model model = test::parse_glb(plant_glb_bytes(plant, record, plain, "test"));
+    CHECK(model.materials.at(0).pbrMetallicRoughness.baseColorFactor[0] == 0.33);
+    for (const tinygltf::Mesh& mesh : model.meshes) CHECK(mesh.primitives.at(0).attributes.count("COLOR_0") == 0);
+
+    PlantExportOptions clash;
+    clash.wind = true;
+    clash.colour = true;
+    clash.wind_presets = {WindPreset::color};
+    CHECK(plant_export_problem(clash).starts_with("--colour and --wind-preset color both write COLOR_0"));
+    CHECK_THROWS_AS(plant_glb_bytes(plant, record, clash, "test"), ConfigError);
+    clash.wind_presets = {WindPreset::uv};
+    CHECK(plant_export_problem(clash).empty());
+    PlantExportOptions short_colours;
+    short_colours.colour = true;
+    const GrownPlant bad{.mesh = state.mesh.view(), .birth_steps = grown.births, .steps = 50,
+                         .colours = std::span<const float>(rgba).first(8)};
+    CHECK_THROWS_AS(plant_glb_bytes(bad, record, short_colours, "test"), std::invalid_argument);
 }
 
 }  // namespace morphogen

@@ -38,16 +38,32 @@ for preset in color uv godot; do
   "$exe" grow --random 3 --steps 60 -o "preset_$preset.glb" --wind --wind-preset $preset >/dev/null
 done
 "$exe" grow --random 4 --steps 120 -o presets_lods.glb --lods 2 --wind --wind-preset color,uv,godot >/dev/null
+# --colour: COLOR_0 in both growth modes, beside levels of detail and the presets it may join.
+"$exe" grow --random 3 --steps 60 -o colour.glb --colour >/dev/null
+"$exe" grow --random 4 --steps 200 -o colour_lods_wind.glb --colour --lods 3 --wind --wind-preset uv,godot >/dev/null
+"$exe" grow --config "$src/configs/tree.json" --random 5 --steps 120 -o colour_branching.glb --colour >/dev/null
+if "$exe" grow --random 3 --steps 10 -o refused.glb --colour --wind --wind-preset color 2>refused.txt; then
+  echo "--colour with --wind-preset color was not refused" >&2
+  exit 1
+fi
+grep -q -- "--colour and --wind-preset color both write COLOR_0" refused.txt
 
 "$exe" evolve "$src/tests/app/fixtures/engine_elites.json" --out run >/dev/null 2>&1
 "$exe" archive run --out plain_elites >/dev/null
 "$exe" archive run --out engine_elites --height 1.5 --wind >/dev/null
 "$exe" archive run --out lod_elites --lods 2 --wind >/dev/null
+"$exe" archive run --out colour_elites --lods 2 --colour >/dev/null
 "$exe" evolve "$src/tests/app/fixtures/engine_best.json" --out engine_run >/dev/null 2>&1
 # run.export_glb of a MAP-Elites run: wind, no levels of detail.
 sed 's/"export_every": 1}/"export_every": 1, "export_glb": {"wind": true}}/' \
   "$src/tests/app/fixtures/engine_elites.json" >elites_wind.json
 "$exe" evolve elites_wind.json --out elites_wind_run >/dev/null 2>&1
+sed 's/"export_every": 1}/"export_every": 1, "export_glb": {"colour": true}}/' \
+  "$src/tests/app/fixtures/engine_elites.json" >elites_colour.json
+"$exe" evolve elites_colour.json --out elites_colour_run >/dev/null 2>&1
+node -e 'const b=require("fs").readFileSync(process.argv[1]); const n=b.readUInt32LE(12);
+  const j=JSON.parse(b.subarray(20, 20 + n)); if (!("COLOR_0" in j.meshes[0].primitives[0].attributes)) process.exit(1);' \
+  elites_colour_run/best/gen_0000.glb
 "$exe" archive run --pack pack_plain >/dev/null
 "$exe" archive run --pack pack_lods_wind --lods 3 --wind --height 2 >/dev/null
 "$exe" archive engine_run --pack pack_ga_lods --lods 2 >/dev/null
@@ -57,5 +73,5 @@ for pack in pack_plain pack_lods_wind pack_ga_lods pack_ga_wind; do
   test -f "$pack/scatter.glb"
 done
 
-node "$src/tools/gltf/validate.js" ./*.glb run/best/*.glb plain_elites/*.glb engine_elites/*.glb lod_elites/*.glb \
-  engine_run/best/*.glb elites_wind_run/best/*.glb pack_*/*.glb
+node "$src/tools/gltf/validate.js" ./*.glb run/best/*.glb plain_elites/*.glb engine_elites/*.glb lod_elites/*.glb colour_elites/*.glb \
+  engine_run/best/*.glb elites_wind_run/best/*.glb elites_colour_run/best/*.glb pack_*/*.glb
