@@ -67,7 +67,10 @@ int run_grow(const GrowOptions& options) {
     if (options.steps) config.growth.steps = *options.steps;
     check_resource_limits(config, Workload{.scores = false, .writers = 1}, options.resources.limits(),
                           config_source(options.config));
-    mesh_format_from_path(options.output);  // refuse an unknown extension before growing
+    // Refuse an unknown extension, or colours it cannot hold, before growing.
+    if (const MeshFormat format = mesh_format_from_path(options.output);
+        options.plant.colour && (format == MeshFormat::off || format == MeshFormat::stl))
+        throw ConfigError("--colour: " + options.output + " cannot hold vertex colours; write .glb, .ply or .obj");
     const bool animating = !options.animate.empty() || !options.frames_obj.empty();
     const int frames = options.frames.value_or(default_animation_frames(config.growth.steps));
     if (animating) {
@@ -89,16 +92,20 @@ int run_grow(const GrowOptions& options) {
                                         : grower.grow(network, workspace, dating);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    if (options.plant.engine_ready()) {
-        const std::vector<float> colours =
-            options.plant.colour ? growth_colours(state, births.steps(), config.growth) : std::vector<float>{};
+    const std::vector<float> colours =
+        options.plant.colour ? growth_colours(state, births.steps(), config.growth) : std::vector<float>{};
+    const MeshFormat format = mesh_format_from_path(options.output);
+    if (options.plant.engine_ready() || (options.plant.colour && format == MeshFormat::glb)) {
         write_plant_glb(options.output,
                         GrownPlant{.mesh = state.mesh.view(), .birth_steps = births.steps(), .steps = state.steps_done,
                                    .colours = colours},
                         grown_record(config, genome, state.mesh.view()), options.plant);
     }
-    else
-        write_mesh(state.mesh.view(), options.output, options.mesh_options);
+    else {
+        MeshWriteOptions mesh_options = options.mesh_options;
+        mesh_options.colours = colours;
+        write_mesh(state.mesh.view(), options.output, mesh_options);
+    }
     if (!options.save_genome.empty()) save_genome(genome, options.save_genome);
     const MeshStats stats = mesh_stats(state.mesh.view());
     std::printf("%s: %d vertices, %d faces, height %.3f, width %.3f, %d steps in %.3f s\n", options.output.c_str(),

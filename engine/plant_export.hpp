@@ -25,7 +25,8 @@ struct PlantExportOptions {
     bool colour = false;             // --colour: COLOR_0 from growth history (docs/algorithm.md §13)
 
     // Whether any option asks for the engine-ready GLB rather than the plain one.
-    bool engine_ready() const { return height_m.has_value() || lods > 0 || wind || colour; }
+    // --colour alone is not: grow writes it into OBJ and PLY files as well.
+    bool engine_ready() const { return height_m.has_value() || lods > 0 || wind; }
 };
 
 inline constexpr int kMaxPlantLods = 8;

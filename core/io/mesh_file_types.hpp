@@ -4,6 +4,8 @@
 // (mesh_io_detail.hpp).
 #include <cstddef>
 
+#include <span>
+
 namespace morphogen {
 
 enum class MeshFormat { obj, ply, off, stl, glb };
@@ -21,6 +23,13 @@ struct MeshWriteOptions {
     // PLY only: 64-bit coordinates and normals (an exact record) instead of
     // float32. three.js and other WebGL viewers cannot draw doubles.
     bool ply_double = false;
+    // OBJ and PLY: vertex colours, 4 linear floats per vertex (RGBA, as
+    // engine/plant_colour.hpp makes them) or empty. Written sRGB-encoded, as
+    // viewers read them: PLY red/green/blue uchar, OBJ `v x y z r g b`.
+    std::span<const float> colours{};
 };
+
+// A linear colour channel in [0, 1] encoded as sRGB in [0, 1].
+double srgb_encode(double linear);
 
 }  // namespace morphogen

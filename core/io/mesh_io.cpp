@@ -10,6 +10,7 @@
 #include "core/base/errors.hpp"
 #include "core/io/mesh_io_detail.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -19,6 +20,11 @@
 #include <system_error>
 
 namespace morphogen {
+
+double srgb_encode(double linear) {
+    const double c = std::clamp(linear, 0.0, 1.0);
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
 
 using namespace mesh_io_detail;
 
@@ -76,7 +82,7 @@ void write_mesh(MeshView mesh, const std::string& path, MeshFormat format, const
 std::string encode_mesh(MeshView mesh, MeshFormat format, const MeshWriteOptions& options, const std::string& source) {
     check_indices(mesh, source);
     switch (format) {
-        case MeshFormat::obj: return obj_bytes(mesh);
+        case MeshFormat::obj: return obj_bytes(mesh, options.colours);
         case MeshFormat::ply: return ply_bytes(mesh, options);
         case MeshFormat::off: return off_bytes(mesh);
         case MeshFormat::stl: return stl_bytes(mesh);

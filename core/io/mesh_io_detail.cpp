@@ -6,6 +6,7 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <stdexcept>
 #include <cstdio>
 
 namespace morphogen::mesh_io_detail {
@@ -50,6 +51,12 @@ void append_int(std::string& out, long long value) {
 std::string header_comment(MeshView mesh) {
     return "morphogen mesh: " + std::to_string(mesh.positions.size()) + " vertices, " +
            std::to_string(mesh.faces.size()) + " triangles, Z up";
+}
+
+void check_colours(MeshView mesh, std::span<const float> colours) {
+    if (!colours.empty() && colours.size() != 4 * mesh.positions.size())
+        throw std::invalid_argument("mesh colours: " + std::to_string(colours.size()) + " floats for " +
+                                    std::to_string(mesh.positions.size()) + " vertices (4 each)");
 }
 
 void append_vertex_lines(std::string& out, MeshView mesh, std::string_view prefix) {

@@ -126,7 +126,9 @@ void add_polygon(std::vector<Face>& faces, const std::vector<int>& corners, cons
 
 // ---------------------------------------------------------------- formats
 
-std::string obj_bytes(MeshView mesh);
+std::string obj_bytes(MeshView mesh, std::span<const float> colours = {});
+// Throws std::invalid_argument unless `colours` is empty or 4 per vertex.
+void check_colours(MeshView mesh, std::span<const float> colours);
 std::string off_bytes(MeshView mesh);
 std::string ply_bytes(MeshView mesh, const MeshWriteOptions& options);
 std::string stl_bytes(MeshView mesh);

@@ -8,11 +8,23 @@ namespace morphogen::mesh_io_detail {
 
 // Positions with 17 digits (exact), then one `vn` per vertex (float digits:
 // shading needs no more), faces as `f a//a b//b c//c` (vertex a, normal a).
-std::string obj_bytes(MeshView mesh) {
+std::string obj_bytes(MeshView mesh, std::span<const float> colours) {
+    check_colours(mesh, colours);
     std::string out;
     out.reserve(text_size_guess(mesh) + mesh.positions.size() * 32 + mesh.faces.size() * 24);
     out += "# " + header_comment(mesh) + "\n";
-    append_vertex_lines(out, mesh, "v ");
+    if (colours.empty()) append_vertex_lines(out, mesh, "v ");
+    for (std::size_t i = 0; !colours.empty() && i < mesh.positions.size(); ++i) {
+        out += "v ";
+        for (int k = 0; k < 3; ++k) {
+            append_double(out, mesh.positions[i][k]);
+            out += ' ';
+        }
+        for (int k = 0; k < 3; ++k) {  // sRGB, as viewers read `v x y z r g b`
+            append_float(out, static_cast<float>(srgb_encode(colours[4 * i + k])));
+            out += k < 2 ? ' ' : '\n';
+        }
+    }
     for (const Vec3& n : stored_normals(mesh)) {
         out += "vn ";
         append_float(out, static_cast<float>(n.x()));

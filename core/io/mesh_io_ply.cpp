@@ -252,7 +252,10 @@ std::string ply_bytes(MeshView mesh, const MeshWriteOptions& options) {
     const std::string type = options.ply_double ? "double" : "float";
     std::string out = "ply\nformat binary_little_endian 1.0\ncomment " + header_comment(mesh) +
                       "\nelement vertex " + std::to_string(mesh.positions.size()) + "\n";
+    check_colours(mesh, options.colours);
     for (const char* name : {"x", "y", "z", "nx", "ny", "nz"}) out += "property " + type + " " + name + "\n";
+    if (!options.colours.empty())
+        for (const char* name : {"red", "green", "blue"}) out += std::string("property uchar ") + name + "\n";
     out += "element face " + std::to_string(mesh.faces.size()) +
            "\nproperty list uchar int vertex_indices\nend_header\n";
     const std::size_t scalar = options.ply_double ? 8 : 4;
@@ -267,6 +270,9 @@ std::string ply_bytes(MeshView mesh, const MeshWriteOptions& options) {
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         put(mesh.positions[i]);
         put(normals[i]);
+        if (!options.colours.empty())
+            for (int k = 0; k < 3; ++k)
+                append_le(out, static_cast<std::uint8_t>(std::lround(255.0 * srgb_encode(options.colours[4 * i + k]))));
     }
     for (const Face& f : mesh.faces) {
         append_le(out, std::uint8_t{3});
