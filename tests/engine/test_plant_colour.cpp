@@ -5,6 +5,7 @@
 #include "engine/plant_colour.hpp"
 #include "engine/plant_export.hpp"
 #include "core/base/errors.hpp"
+#include "core/io/mesh_io.hpp"
 #include "tests/engine/glb_reader.hpp"
 #include "tests/engine/grow_dated.hpp"
 #include "core/growth/genome_grower.hpp"
@@ -13,6 +14,8 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 namespace morphogen {
@@ -154,6 +157,43 @@ TEST_CASE("--colour writes COLOR_0 on every level with a white material; the col
     const GrownPlant bad{.mesh = state.mesh.view(), .birth_steps = grown.births, .steps = 50,
                          .colours = std::span<const float>(rgba).first(8)};
     CHECK_THROWS_AS(plant_glb_bytes(bad, record, short_colours, "test"), std::invalid_argument);
+}
+
+TEST_CASE("OBJ and PLY carry the colours (sRGB) and still read back as the same mesh", "[colour]") {
+    const testing::Grown grown = grow_dated(5, 40);
+    const GrowthParams params{};
+    const std::vector<float> rgba = growth_colours(grown.state, grown.births, params);
+    const MeshView mesh = grown.state.mesh.view();
+    MeshWriteOptions options;
+    options.colours = rgba;
+    const std::string obj = encode_mesh(mesh, MeshFormat::obj, options);
+    std::istringstream lines(obj);
+    std::string line;
+    std::size_t v = 0;
+    while (std::getline(lines, line)) {
+        if (!line.starts_with("v ")) continue;
+        std::istringstream fields(line.substr(2));
+        double x[6];
+        for (double& f : x) REQUIRE(static_cast<bool>(fields >> f));
+        for (int k = 0; k < 3; ++k) CHECK(std::abs(x[3 + k] - srgb_encode(rgba[4 * v + k])) < 1e-6);
+        ++v;
+    }
+    CHECK(v == mesh.positions.size());
+    CHECK(parse_mesh(obj, MeshFormat::obj, "test.obj").positions.size() == mesh.positions.size());
+    const std::string ply = encode_mesh(mesh, MeshFormat::ply, options);
+    CHECK(ply.find("property uchar red\nproperty uchar green\nproperty uchar blue\n") != std::string::npos);
+    const std::string plain = encode_mesh(mesh, MeshFormat::ply, {});
+    const std::size_t header_lines = 60;  // the three "property uchar ..." lines
+    CHECK(ply.size() == plain.size() + header_lines + 3 * mesh.positions.size());
+    // The first vertex's colour bytes follow its 6 floats.
+    const std::size_t body = ply.find("end_header\n") + 11;
+    for (int k = 0; k < 3; ++k)
+        CHECK(static_cast<unsigned char>(ply[body + 24 + k]) == std::lround(255.0 * srgb_encode(rgba[k])));
+    const MeshArrays back = parse_mesh(ply, MeshFormat::ply, "test.ply");
+    CHECK(back.positions.size() == mesh.positions.size());
+    CHECK(back.faces.size() == mesh.faces.size());
+    options.colours = std::span<const float>(rgba).first(4);
+    CHECK_THROWS_AS(encode_mesh(mesh, MeshFormat::obj, options), std::invalid_argument);
 }
 
 }  // namespace morphogen
