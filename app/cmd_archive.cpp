@@ -191,7 +191,7 @@ int run_archive(const ArchiveOptions& o) {
         }
         std::string stem = std::to_string(cell);
         stem = "cell_" + std::string(digits - stem.size(), '0') + stem;
-        if (o.plant.engine_ready())
+        if (o.plant.engine_ready() || o.plant.colour)  // elites are GLBs: --colour alone makes them coloured
             export_engine_plant(problem.grower(), elite->params, birth_record(config, *elite, measure_names, cell),
                                 o.plant, out / stem);
         else

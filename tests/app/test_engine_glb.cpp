@@ -99,6 +99,26 @@ TEST_CASE("archive --height names each elite plant_<birth> and records its run, 
     CHECK(run_morphogen("archive " + q(run) + " --out " + q(out) + " --height -3").code == 2);
 }
 
+TEST_CASE("archive --colour alone writes each elite's GLB with COLOR_0 and a white material", "[cli][engine][colour]") {
+    TempDir dir("engine-archive-colour");
+    const fs::path run = dir.path / "run", out = dir.path / "elites";
+    REQUIRE(run_morphogen("evolve " + q(kElitesConfig) + " --out " + q(run)).code == 0);
+    const CliResult r = run_morphogen("archive " + q(run) + " --out " + q(out) + " --top 2 --colour");
+    INFO(r.output);
+    REQUIRE(r.code == 0);
+    int elites = 0;
+    for (const auto& entry : fs::directory_iterator(out)) {
+        if (entry.path().extension() != ".glb") continue;
+        const tinygltf::Model model = parse_glb(read_text(entry.path()));
+        const tinygltf::Primitive& body = model.meshes.at(0).primitives.at(0);
+        CHECK(body.attributes.count("COLOR_0") == 1);
+        const std::vector<double>& base = model.materials.at(body.material).pbrMetallicRoughness.baseColorFactor;
+        CHECK(base == std::vector<double>{1.0, 1.0, 1.0, 1.0});
+        ++elites;
+    }
+    CHECK(elites == 2);
+}
+
 TEST_CASE("grow --wind adds _WIND without changing the mesh, also while animating", "[cli][engine][wind]") {
     TempDir dir("engine-wind");
     REQUIRE(run_morphogen("grow --random 4 --steps 60 --height 3 -o " + q(dir.path / "still.glb")).code == 0);
