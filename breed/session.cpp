@@ -74,6 +74,22 @@ std::string csv_list(const std::vector<std::string>& parents, std::size_t i) {
 }
 }  // namespace
 
+namespace {
+
+// The session directory's lock (RunLock, as run directories have), with a
+// message that names a session: a second server on one session would give
+// two genomes the same id and lose the session.
+std::unique_ptr<RunLock> lock_session(const fs::path& dir) {
+    try {
+        return std::make_unique<RunLock>(dir);
+    } catch (const IoError&) {
+        throw IoError("breeding session " + dir.string() +
+                      " is in use by another morphogen process (one server per session); it was left as it is");
+    }
+}
+
+}  // namespace
+
 BreedSession::BreedSession(fs::path dir, ExperimentConfig config, BreedSessionOptions options)
     : dir_(std::move(dir)),
       config_(std::move(config)),
@@ -110,8 +126,10 @@ std::unique_ptr<BreedSession> BreedSession::create(const fs::path& dir, const Ex
         throw IoError(dir.string() + ": already exists and is not an empty directory (continue a session with --resume " +
                       dir.string() + ")");
     for (const char* sub : {"genomes", "meshes", "thumbs", "exports"}) fs::create_directories(dir / sub);
+    auto held = lock_session(dir);
     write_json_file(dir / "config.json", config.resolved);
     std::unique_ptr<BreedSession> session(new BreedSession(dir, config, options));
+    session->lock_ = std::move(held);
     session->choices_file_ = std::make_unique<AppendFile>(AppendFile::create(dir / "choices.jsonl", ""));
     std::lock_guard lock(session->mutex_);
     const std::vector<std::string> grid = session->start_grid(from);
@@ -525,6 +543,7 @@ std::unique_ptr<BreedSession> BreedSession::resume(const fs::path& dir, BreedSes
     const fs::path config_path = dir / "config.json";
     if (!fs::exists(dir / "state.json"))
         throw CheckpointError((dir / "state.json").string() + ": missing: " + dir.string() + " is not a breeding session");
+    auto held = lock_session(dir);
     const ExperimentConfig config = read_experiment_config(read_json_file(config_path), config_path.string());
     const json state = read_json_file(dir / "state.json");
     const std::string where = (dir / "state.json").string();
@@ -532,6 +551,7 @@ std::unique_ptr<BreedSession> BreedSession::resume(const fs::path& dir, BreedSes
         if (state.at("format") != kStateFormat || state.at("version") != kStateVersion)
             throw CheckpointError(where + ": not a version " + std::to_string(kStateVersion) + " breeding session");
         std::unique_ptr<BreedSession> session(new BreedSession(dir, config, options));
+        session->lock_ = std::move(held);
         for (const json& p : state.at("plants")) {
             BreedPlant plant;
             plant.id = p.at("id").get<std::string>();

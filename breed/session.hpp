@@ -18,6 +18,7 @@
 #include "breed/plant_growth.hpp"
 #include "engine/plant_export.hpp"
 #include "run/config/experiment_config.hpp"
+#include "run/persistence/run_directory.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -68,6 +69,9 @@ public:
                                                 BreedSessionOptions options = {});
     // Continues the session in `dir` as its state.json left it (a choice
     // whose state.json was never written is dropped from choices.jsonl).
+    // Refused with IoError, nothing read or written, while another session
+    // (in this or another process) holds the directory; a process killed
+    // with kill -9 holds nothing (the lock is flock(2) on <dir>/.lock).
     static std::unique_ptr<BreedSession> resume(const std::filesystem::path& dir, BreedSessionOptions options = {});
     // Replays `from`'s choices.jsonl into the new session `out`.
     static std::unique_ptr<BreedSession> replay(const std::filesystem::path& from, const std::filesystem::path& out,
@@ -143,6 +147,7 @@ private:
     std::vector<BreedStep> steps_;  // steps_[cursor_] is the grid shown
     std::size_t cursor_ = 0;
     std::uint64_t choices_ = 0;
+    std::unique_ptr<RunLock> lock_;  // one writer per session directory, for the session's life
     std::unique_ptr<AppendFile> choices_file_;
     mutable std::mutex mutex_;
 

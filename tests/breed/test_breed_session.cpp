@@ -196,15 +196,19 @@ TEST_CASE("plants are a function of the seed and the choices: replay and resume 
         auto c = BreedSession::create(tmp.path / "c", tiny_breed_config(), {});
         std::vector<std::string> g = grid_ids(c->state_json());
         c->breed({g[3], g[5]}, 0.5);
+        c.reset();  // one session per directory at a time
         c = BreedSession::resume(tmp.path / "c");
         g = grid_ids(c->state_json());
         c->breed({g[7]}, 1.0);
+        c.reset();  // one session per directory at a time
         c = BreedSession::resume(tmp.path / "c");
         c->undo();
+        c.reset();  // one session per directory at a time
         c = BreedSession::resume(tmp.path / "c");
         g = grid_ids(c->state_json());
         c->breed({g[2]}, 0.2);
         c->undo();
+        c.reset();  // one session per directory at a time
         c = BreedSession::resume(tmp.path / "c");
         c->redo();
     }
@@ -257,12 +261,34 @@ TEST_CASE("resume refuses what is not a session and drops a choice whose state w
     // line the state does not hold: resume cuts it off.
     const std::string log = read_text(tmp.path / "s" / "choices.jsonl");
     write_text(tmp.path / "s" / "choices.jsonl", log + "{\"choice\":\"undo\"}\n");
-    const auto s = BreedSession::resume(tmp.path / "s");
+    auto s = BreedSession::resume(tmp.path / "s");
     CHECK(s->state_json().at("generation") == 1);
     CHECK(read_text(tmp.path / "s" / "choices.jsonl") == log);
+    s.reset();
     // A damaged state is refused with its file named.
     write_text(tmp.path / "s" / "state.json", "{\"format\": 3}");
     CHECK_THROWS_WITH(BreedSession::resume(tmp.path / "s"), Catch::Contains("state.json"));
+}
+
+TEST_CASE("one session per directory: a second resume is refused and leaves the files; a killed one holds nothing",
+          "[breed]") {
+    TempDir tmp("breed");
+    const fs::path dir = tmp.path / "s";
+    auto first = BreedSession::create(dir, tiny_breed_config(), {});
+    first->breed({grid_ids(first->state_json())[0]}, 0.5);
+    const std::vector<std::string> files = session_files(dir);
+    std::map<std::string, std::string> bytes;
+    for (const std::string& f : files) bytes[f] = read_text(dir / f);
+    // Today's second server: refused before it reads or writes anything.
+    CHECK_THROWS_WITH(BreedSession::resume(dir), Catch::Contains("in use by another morphogen process"));
+    CHECK(session_files(dir) == files);
+    for (const std::string& f : files) CHECK(read_text(dir / f) == bytes[f]);
+    // The first session goes on, and its directory opens once it is gone
+    // (the lock dies with its holder, as with kill -9).
+    first->undo();
+    const json state = first->state_json();
+    first.reset();
+    CHECK(BreedSession::resume(dir)->state_json() == state);
 }
 
 TEST_CASE("export writes the genome and an engine-ready GLB", "[breed]") {
@@ -291,7 +317,7 @@ TEST_CASE("export writes the genome and an engine-ready GLB", "[breed]") {
 TEST_CASE("a choice that cannot be saved changes nothing: the session stays what its files say", "[breed]") {
     TempDir tmp("breed");
     const fs::path dir = tmp.path / "s";
-    const auto s = BreedSession::create(dir, tiny_breed_config(), {});
+    auto s = BreedSession::create(dir, tiny_breed_config(), {});
     s->breed({grid_ids(s->state_json())[0]}, 0.5);
     const json before = s->state_json();
     const std::string log = read_text(dir / "choices.jsonl");
@@ -315,6 +341,7 @@ TEST_CASE("a choice that cannot be saved changes nothing: the session stays what
     s->undo();
     const json after = s->state_json();
     CHECK(lines(read_text(dir / "choices.jsonl")) == lines(log) + 2);
+    s.reset();
     CHECK(BreedSession::resume(dir)->state_json() == after);
     BreedSession::replay(dir, tmp.path / "r");
     CHECK(session_difference(dir, tmp.path / "r") == "");

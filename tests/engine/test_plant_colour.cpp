@@ -106,7 +106,7 @@ TEST_CASE("plant colours: the tint shifts the hue, and bad sizes are refused", "
     CHECK_THROWS_AS(plant_colours(in), std::invalid_argument);
 }
 
-TEST_CASE("--colour writes COLOR_0 on every level with a white material; the colour preset is refused with it",
+TEST_CASE("colour (--colour) writes COLOR_0 on every level with a white material; the colour preset is refused with it",
           "[colour]") {
     const testing::Grown grown = grow_dated(7, 50);
     const GrowthState& state = grown.state;
