@@ -3,7 +3,8 @@
 every file of every room, in its subfolders too: every project include names
 its room and points to a room this room may include; no two files include
 each other (a .cpp and its .hpp count as one unit); app/ holds only commands
-and their option parsing (main.cpp, cmd_*.cpp, commands.hpp, *_options.*).
+and their option parsing (main.cpp, cmd_*.cpp, commands.hpp, *_options.*);
+no test name in tests/ starts with "-".
 Prints each breach; exit 1 if any. Usage: scripts/check_house.py [PROJECT_ROOT]"""
 import os
 import re
@@ -72,6 +73,16 @@ APP_FILE = re.compile(r'(main\.cpp|commands\.hpp|cmd_\w+\.cpp|\w+_options\.(cpp|
 for path in sources('app'):
     if not APP_FILE.match(path[len('app/'):]):
         breaches.append(f'{path}: app/ holds only commands and their option parsing; move it into the room it belongs to')
+# A Catch2 test named "-..." is read as a command-line option when CTest runs it alone.
+for folder, dirs, names in os.walk(os.path.join(root, 'tests')):
+    for name in sorted(names):
+        if name.endswith('.cpp'):
+            path = os.path.join(folder, name)
+            with open(path, encoding='utf-8') as f:
+                for number, line in enumerate(f, 1):
+                    if re.search(r'TEST_CASE\(\s*"-', line):
+                        rel = os.path.relpath(path, root).replace(os.sep, '/')
+                        breaches.append(f'{rel}:{number}: a test name may not start with "-" (Catch2 reads it as an option)')
 for b in breaches:
     print(b)
 print(f'house: {len(units)} units checked, {len(breaches)} breaches')

@@ -75,6 +75,13 @@ class CheckHouse(unittest.TestCase):
         code, out = check({'app/tools/clock.cpp': ''})
         self.assertEqual(code, 1)
 
+    def test_a_test_named_like_an_option_fails(self):
+        code, out = check({'tests/app/test_x.cpp': 'TEST_CASE("--height is refused", "[cli]") {}\n'})
+        self.assertEqual(code, 1)
+        self.assertIn('tests/app/test_x.cpp:1: a test name may not start with "-"', out)
+        code, out = check({'tests/app/test_x.cpp': 'TEST_CASE("heights (--height) are refused", "[cli]") {}\n'})
+        self.assertEqual(code, 0, out)
+
 
 if __name__ == '__main__':
     unittest.main()
