@@ -5,6 +5,7 @@
 #include "app/resource_options.hpp"
 #include "core/base/errors.hpp"
 #include "engine/birth_steps.hpp"
+#include "engine/leaf_cards.hpp"
 #include "engine/plant_colour.hpp"
 #include "engine/plant_export.hpp"
 #include "fitness/descriptors.hpp"
@@ -87,18 +88,20 @@ int run_grow(const GrowOptions& options) {
     GrowthWorkspace workspace;
     GrowthFrames recorded;
     BirthSteps births(grower.seed().mesh.num_vertices());  // for --wind
-    const StepObserver dating = options.plant.wind || options.plant.colour ? births.observer() : StepObserver{};
+    const StepObserver dating =
+        options.plant.wind || options.plant.colour || options.plant.leaves ? births.observer() : StepObserver{};
     const GrowthState state = animating ? grow_with_frames(grower, network, frames, workspace, recorded, dating)
                                         : grower.grow(network, workspace, dating);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
     const std::vector<float> colours =
         options.plant.colour ? growth_colours(state, births.steps(), config.growth) : std::vector<float>{};
+    const std::vector<double> light = options.plant.leaves ? leaf_light(state, config.growth) : std::vector<double>{};
     const MeshFormat format = mesh_format_from_path(options.output);
     if (options.plant.engine_ready() || (options.plant.colour && format == MeshFormat::glb)) {
         write_plant_glb(options.output,
                         GrownPlant{.mesh = state.mesh.view(), .birth_steps = births.steps(), .steps = state.steps_done,
-                                   .colours = colours},
+                                   .colours = colours, .light = light},
                         grown_record(config, genome, state.mesh.view()), options.plant);
     }
     else {

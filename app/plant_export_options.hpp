@@ -7,6 +7,7 @@
 //   --wind-preset NAME[,NAME]  also copies of it where engines read them
 //               (color, uv, godot; repeatable; needs --wind)
 //   --colour    COLOR_0 from growth history (engine/plant_colour.hpp)
+//   --leaves [--leaf-size F] [--leaf-density D]  foliage cards (engine/leaf_cards.hpp)
 // Header-only: app/ holds at most 15 source files.
 #include "engine/plant_export.hpp"
 
@@ -31,6 +32,15 @@ inline void add_plant_export_options(CLI::App* command, PlantExportOptions& opti
     command->add_flag("--colour", options.colour,
                       "Engine-ready GLB with vertex colours from growth history and the genome's hue "
                       "(COLOR_0, docs/algorithm.md section 13); the material turns white");
+    command->add_flag("--leaves", options.leaves,
+                      "Engine-ready GLB with foliage cards at the exposed young vertices: a second primitive "
+                      "with the leaf material (alpha mask, two-sided, an embedded leaf texture)");
+    command->add_option("--leaf-size", options.leaf_size,
+                        "With --leaves: each card's length as a fraction of the plant's height, above 0 and at most 0.5 "
+                        "(default 0.06)");
+    command->add_option("--leaf-density", options.leaf_density,
+                        "With --leaves: the fraction of eligible vertices that carry a card, above 0 and at most 1 "
+                        "(default 0.5; cards keep half a card's length apart)");
     command
         ->add_option_function<std::vector<std::string>>(
             "--wind-preset",
@@ -60,7 +70,8 @@ inline void check_plant_export_options(const PlantExportOptions& options, const 
     std::string ext = std::filesystem::path(glb_path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext != ".glb") {
-        const char* option = options.lods > 0 ? "--lods" : options.wind ? "--wind" : options.colour ? "--colour" : "--height";
+        const char* option = options.lods > 0 ? "--lods" : options.wind ? "--wind" : options.leaves ? "--leaves"
+                             : options.colour ? "--colour" : "--height";
         throw CLI::ValidationError(std::string(option) + ": writes an engine-ready GLB, so the output must be .glb, not '" +
                                    glb_path + "'");
     }

@@ -2,6 +2,7 @@
 
 #include "core/base/atomic_file.hpp"
 #include "core/base/errors.hpp"
+#include "engine/leaf_texture.hpp"
 #include "engine/plant_frame.hpp"
 #include "engine/plant_lods.hpp"
 #include "engine/plant_wind.hpp"
@@ -20,6 +21,23 @@ std::string shortest(double value) {
     text << value;
     return text.str();
 }
+
+// --leaves: each level's cards, thinned with its triangles (lod_leaves), and
+// their counts in extras. `wind`: LOD0's, where the cards are anchored.
+void add_leaves(EnginePlant& ready, std::span<const LeafCard> cards, std::span<const float> wind,
+                const PlantExportOptions& options) {
+    const LeafParams params = options.leaf_params();
+    ready.extras["leaves"] = cards.size();
+    ready.extras["leaf_size"] = params.size;
+    ready.extras["leaf_density"] = params.density;
+    if (cards.empty())
+        std::cerr << "morphogen: " << ready.name << ": --leaves: no young, lit vertex to carry a card, so it has none\n";
+    const double faces = static_cast<double>(ready.levels.front().faces.size());
+    for (const MeshArrays& level : ready.levels) {
+        const LodLeaves lod = lod_leaves(cards.size(), static_cast<double>(level.faces.size()) / faces);
+        ready.leaves.push_back(leaf_mesh(cards, lod.count, lod.scale, wind));
+    }
+}
 }  // namespace
 
 double lod_percent(double fraction) { return std::round(fraction * 1e5) / 1e3; }
@@ -29,6 +47,14 @@ std::string plant_export_problem(const PlantExportOptions& options) {
         return "--height " + shortest(*options.height_m) + ": must be a number of metres in [0.001, 10000]";
     if (options.lods < 0 || options.lods > kMaxPlantLods)
         return "--lods " + std::to_string(options.lods) + ": must be between 1 and " + std::to_string(kMaxPlantLods);
+    if ((options.leaf_size || options.leaf_density) && !options.leaves)
+        return std::string(options.leaf_size ? "--leaf-size " + shortest(*options.leaf_size)
+                                             : "--leaf-density " + shortest(*options.leaf_density)) +
+               ": shapes the cards of --leaves, so it needs --leaves";
+    if (options.leaves)
+        if (std::string problem = leaf_params_problem(options.leaf_params(), "--leaf-size", "--leaf-density");
+            !problem.empty())
+            return problem;
     if (!options.wind_presets.empty() && !options.wind)
         return "--wind-preset " + std::string(wind_preset_name(options.wind_presets.front())) +
                ": copies the wind data, so it needs --wind";
@@ -66,8 +92,14 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
         colours.assign(plant.colours.begin(), plant.colours.end());
         ready.extras["colour"] = "COLOR_0";
     }
+    std::vector<LeafCard> cards;
+    if (options.leaves)
+        cards = leaf_cards({.placed = placed.mesh.view(), .birth_steps = plant.birth_steps, .steps = plant.steps,
+                            .light = plant.light, .seed = leaf_seed(record.genome_hash)},
+                           options.leaf_params());
     if (options.lods == 0) {
         ready.levels.push_back(std::move(placed.mesh));
+        if (options.leaves) add_leaves(ready, cards, wind, options);
         ready.wind.push_back(std::move(wind));
         ready.colours.push_back(std::move(colours));
         return ready;
@@ -99,6 +131,7 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
         else if (ready.colours.empty()) ready.colours.push_back(colours);
         else ready.colours.push_back(transfer_wind(placed.mesh.view(), colours, level.view()));
     }
+    if (options.leaves) add_leaves(ready, cards, wind, options);
     return ready;
 }
 
@@ -106,16 +139,22 @@ std::string plant_glb_bytes(const EnginePlant& plant, const std::string& source)
     const bool coloured = !plant.colours.empty() && !plant.colours.front().empty();
     PlantGlb glb{.name = plant.name, .extras = plant.extras, .levels = {}, .lod_nodes = plant.lod_nodes,
                  .vertex_colours = coloured};
+    if (!plant.leaves.empty() && plant.leaves.front().cards() > 0) glb.leaf_png = leaf_texture_png();
     for (std::size_t i = 0; i < plant.levels.size(); ++i) {
         nlohmann::json extras;
         if (plant.lod_nodes) extras = {{"triangles", plant.levels[i].faces.size()}};
         if (plant.lod_nodes && i > 0) extras["hausdorff_percent"] = lod_percent(plant.lod_distances[i]);
+        if (plant.lod_nodes && !plant.leaves.empty()) extras["leaves"] = plant.leaves[i].cards();
         std::vector<VertexAttribute> attributes = wind_preset_attributes(plant.wind[i], plant.wind_presets);
         if (coloured) attributes.push_back({.name = "COLOR_0", .components = 4, .values = plant.colours[i]});
         glb.levels.push_back(PlantLevel{.mesh = plant.levels[i].view(),
                                         .wind = plant.wind[i],
                                         .attributes = std::move(attributes),
                                         .extras = extras});
+        if (!plant.leaves.empty())
+            glb.levels.back().leaves = {.mesh = plant.leaves[i].mesh.view(), .uv = plant.leaves[i].uv,
+                                        .wind = plant.leaves[i].wind,
+                                        .attributes = wind_preset_attributes(plant.leaves[i].wind, plant.wind_presets)};
     }
     return plant_glb_bytes(glb, source);
 }

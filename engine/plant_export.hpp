@@ -3,6 +3,7 @@
 // grow, archive and the best-of-generation export; docs/file-formats.md,
 // "Engine-ready GLB"): placed at its foot and scaled (plant_frame.hpp),
 // named plant_<id>, its record in extras (plant_record.hpp).
+#include "engine/leaf_cards.hpp"
 #include "engine/plant_record.hpp"
 #include "engine/plant_wind.hpp"
 #include "core/mesh/mesh.hpp"
@@ -23,10 +24,17 @@ struct PlantExportOptions {
     bool wind = false;               // --wind: the _WIND vertex attribute
     std::vector<WindPreset> wind_presets{};  // --wind-preset: copies of _WIND where engines read them (needs wind)
     bool colour = false;             // --colour: COLOR_0 from growth history (docs/algorithm.md §13)
+    bool leaves = false;             // --leaves: foliage cards (engine/leaf_cards.hpp)
+    std::optional<double> leaf_size{};     // --leaf-size: card length / plant height (needs leaves)
+    std::optional<double> leaf_density{};  // --leaf-density: cards per eligible vertex (needs leaves)
+
+    LeafParams leaf_params() const {
+        return {.size = leaf_size.value_or(kDefaultLeafSize), .density = leaf_density.value_or(kDefaultLeafDensity)};
+    }
 
     // Whether any option asks for the engine-ready GLB rather than the plain one.
     // --colour alone is not: grow writes it into OBJ and PLY files as well.
-    bool engine_ready() const { return height_m.has_value() || lods > 0 || wind; }
+    bool engine_ready() const { return height_m.has_value() || lods > 0 || wind || leaves; }
 };
 
 inline constexpr int kMaxPlantLods = 8;
@@ -49,6 +57,9 @@ struct GrownPlant {
     // For --colour: 4 linear floats per vertex (RGBA, A = 1), colour_rgba()
     // of engine/plant_colour.hpp.
     std::span<const float> colours{};
+    // For --leaves: each vertex's light in [0, 1] (leaf_light() of
+    // engine/leaf_cards.hpp); empty: its height stands in.
+    std::span<const double> light{};
 };
 
 // A plant made engine-ready and not yet laid out in glTF: what its GLB holds,
@@ -65,6 +76,7 @@ struct EnginePlant {
     // LOD0's diagonal (plant_lods.hpp); levels may be fewer than asked.
     std::vector<double> lod_distances;
     double height_m = 0.0;                 // the placed plant's height in metres
+    std::vector<LeafMesh> leaves{};        // per level with --leaves: its cards (lod_leaves), else empty
 };
 
 // A fraction as a percentage rounded to 3 decimals, as extras and the pack's
@@ -74,7 +86,9 @@ double lod_percent(double fraction);
 // Places the plant, makes its levels and wind data. With --lods the chain
 // stops at the first level that cannot keep its distance bound
 // (simplify_lods): extras record `lods_requested` and `lods_written`, and one
-// line on stderr says so. Throws as plant_glb_bytes.
+// line on stderr says so. With --leaves, the cards (leaf_cards, seeded by the
+// record's genome hash) go to every level, thinned as lod_leaves says; a
+// plant with none says so on stderr. Throws as plant_glb_bytes.
 EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options);
 
 // The GLB bytes of a plant made engine-ready; IoError naming `source` when

@@ -73,6 +73,11 @@ void SpeciesPack::add(const GrownPlant& plant, const PlantRecord& record) {
     nlohmann::json triangles = nlohmann::json::array();
     for (const MeshArrays& level : ready.levels) triangles.push_back(level.faces.size());
     entry["triangles"] = triangles;
+    if (options_.leaves) {
+        nlohmann::json cards = nlohmann::json::array();
+        for (const LeafMesh& level : ready.leaves) cards.push_back(level.cards());
+        entry["leaves"] = cards;  // per level, as triangles
+    }
     if (options_.lods > 0) {
         entry["lods_written"] = ready.levels.size();  // fewer than options.lods where the chain stopped
         nlohmann::json distances = nlohmann::json::array();

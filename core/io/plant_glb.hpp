@@ -23,6 +23,16 @@ struct VertexAttribute {
     std::vector<float> values;
 };
 
+// Foliage cards of a level (engine/leaf_cards.hpp): a second primitive of
+// the level's mesh, drawn with the leaf material (alphaMode MASK,
+// doubleSided, the leaf texture). No vertices: none.
+struct LeafPrimitive {
+    MeshView mesh;                               // Z-up, as the level's mesh
+    std::vector<float> uv;                       // 2 per vertex: the leaf texture's coordinates
+    std::vector<float> wind;                     // _WIND, 4 per vertex, or empty
+    std::vector<VertexAttribute> attributes{};   // written after _WIND (wind presets)
+};
+
 // One level of detail: its mesh (Z-up, converted to glTF's Y-up here) and,
 // when the plant has wind data, four floats per vertex in [0, 1].
 struct PlantLevel {
@@ -30,6 +40,7 @@ struct PlantLevel {
     std::vector<float> wind;   // empty, or 4 * mesh.positions.size() values
     std::vector<VertexAttribute> attributes{};  // written after _WIND, in this order
     nlohmann::json extras;     // this level's own extras (null: none)
+    LeafPrimitive leaves{};    // its foliage cards, if any
 };
 
 struct PlantGlb {
@@ -42,11 +53,16 @@ struct PlantGlb {
     // true: the levels carry COLOR_0 (engine/plant_colour.hpp), so the
     // material's base colour is white and the vertex colour is the colour.
     bool vertex_colours = false;
+    // With foliage cards on any level: the leaf texture, PNG bytes
+    // (engine/leaf_texture.hpp). Its coordinates go in the first TEXCOORD_n
+    // the cards' attributes leave free.
+    std::string leaf_png{};
 };
 
 // The .glb bytes. Throws std::invalid_argument for no levels, several levels
 // without lod_nodes, wind data or an attribute of the wrong length, or an
-// attribute whose name is taken or that has not 2, 3 or 4 components; IoError naming
+// attribute whose name is taken or that has not 2, 3 or 4 components, or
+// foliage cards without leaf_png or with data of the wrong length; IoError naming
 // `source` if tinygltf cannot encode the model.
 std::string plant_glb_bytes(const PlantGlb& plant, const std::string& source);
 

@@ -93,6 +93,22 @@ void read_wind_presets(ObjectReader& options, PlantExportOptions& o) {
 }
 }  // namespace
 
+namespace {
+// export_glb.leaves, leaf_size and leaf_density: grow's --leaves, --leaf-size
+// and --leaf-density. Read (and resolved) only when given, so the resolved
+// config of runs without them keeps its bytes.
+void read_leaves(ObjectReader& options, PlantExportOptions& o) {
+    if (options.raw("leaves") != nullptr) o.leaves = options.boolean("leaves", false);
+    if (options.raw("leaf_size") != nullptr)
+        o.leaf_size = options.number("leaf_size", kDefaultLeafSize, 0, kMaxLeafSize, true);
+    if (options.raw("leaf_density") != nullptr)
+        o.leaf_density = options.number("leaf_density", kDefaultLeafDensity, 0, 1, true);
+    for (const char* key : {"leaf_size", "leaf_density"})
+        if (options.raw(key) != nullptr && !o.leaves)
+            options.issues().add(options.path_of(key), "shapes the cards of \"leaves\": true, so it needs it");
+}
+}  // namespace
+
 RunParams read_run_params(ObjectReader& reader) {
     RunParams p;
     p.seed = static_cast<std::uint64_t>(reader.integer("seed", static_cast<long long>(p.seed), 0, max_exact_integer));
@@ -121,6 +137,7 @@ RunParams read_run_params(ObjectReader& reader) {
         if (options.raw("colour") != nullptr) o.colour = options.boolean("colour", false);
         if (const std::string problem = plant_export_problem(o); o.colour && !problem.empty())
             options.issues().add(options.path_of("colour"), problem);
+        read_leaves(options, o);
         options.finish();
         reader.set_resolved("export_glb", options.resolved());
     }

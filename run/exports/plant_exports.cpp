@@ -1,6 +1,7 @@
 #include "run/exports/plant_exports.hpp"
 
 #include "engine/birth_steps.hpp"
+#include "engine/leaf_cards.hpp"
 #include "engine/plant_colour.hpp"
 #include "core/growth/genome_io.hpp"
 #include "core/io/mesh_io.hpp"
@@ -39,6 +40,9 @@ void export_engine_plant(const GenomeGrower& grower, std::span<const double> par
     const std::vector<float> colours =
         options.colour ? growth_colours(grown.state, grown.birth_steps, grower.params()) : std::vector<float>{};
     plant.colours = colours;
+    const std::vector<double> light =
+        options.leaves ? leaf_light(grown.state, grower.params()) : std::vector<double>{};
+    plant.light = light;
     write_plant_glb(stem.string() + ".glb", plant, record, options);
     write_mesh(grown.state.mesh.view(), stem.string() + ".obj");
     save_genome(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())},

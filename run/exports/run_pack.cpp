@@ -5,6 +5,7 @@
 #include "run/searches/elites_search.hpp"
 #include "run/searches/ga_search.hpp"
 #include "run/config/map_elites_config.hpp"
+#include "engine/leaf_cards.hpp"
 #include "run/exports/plant_exports.hpp"
 #include "run/loop/stop_signals.hpp"
 
@@ -63,7 +64,11 @@ std::optional<std::size_t> write_run_pack(const ExperimentConfig& config, const 
         for (const RunSpecies& one : species) {
             if (StopSignals::requested()) break;
             const DatedGrowth grown = grow_dated(grower, one.individual->params);
-            pack.add(grown.plant(), birth_record(config, *one.individual, measures, one.cell));
+            GrownPlant plant = grown.plant();
+            const std::vector<double> light =
+                options.leaves ? leaf_light(grown.state, grower.params()) : std::vector<double>{};
+            plant.light = light;
+            pack.add(plant, birth_record(config, *one.individual, measures, one.cell));
         }
         if (StopSignals::requested()) {
             pack.abandon();
