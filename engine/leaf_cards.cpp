@@ -2,6 +2,7 @@
 #include "engine/leaf_cards.hpp"
 
 #include "core/mesh/vertex_normals.hpp"
+#include "engine/body_inside.hpp"
 #include "engine/plant_colour.hpp"
 
 #include <algorithm>
@@ -36,38 +37,33 @@ std::string number_text(double value) {
     return text.str();
 }
 
-// Anchors already placed, bucketed by cells of the least spacing.
-class SpacingGrid {
+// Points bucketed by cells of edge `cell`: the points within `cell` of a
+// place are in its cell or the 26 around it.
+class PointGrid {
 public:
-    explicit SpacingGrid(double spacing) : spacing_(spacing) {}
-    bool near(const Vec3& p) const {
-        const auto [i, j, k] = cell(p);
+    explicit PointGrid(double cell) : cell_(cell) {}
+    void add(const Vec3& p, int index) { cells_[key(p, 0, 0, 0)].push_back({p, index}); }
+    // Calls visit(point, index) for every point within `cell` of p, and more.
+    template <class Visit>
+    void visit_near(const Vec3& p, Visit&& visit) const {
         for (long long di = -1; di <= 1; ++di)
             for (long long dj = -1; dj <= 1; ++dj)
                 for (long long dk = -1; dk <= 1; ++dk) {
-                    const auto found = cells_.find(key(i + di, j + dj, k + dk));
+                    const auto found = cells_.find(key(p, di, dj, dk));
                     if (found == cells_.end()) continue;
-                    for (const Vec3& q : found->second)
-                        if ((q - p).squaredNorm() < spacing_ * spacing_) return true;
+                    for (const auto& [q, index] : found->second) visit(q, index);
                 }
-        return false;
-    }
-    void add(const Vec3& p) {
-        const auto [i, j, k] = cell(p);
-        cells_[key(i, j, k)].push_back(p);
     }
 
 private:
-    std::array<long long, 3> cell(const Vec3& p) const {
-        return {static_cast<long long>(std::floor(p.x() / spacing_)), static_cast<long long>(std::floor(p.y() / spacing_)),
-                static_cast<long long>(std::floor(p.z() / spacing_))};
+    std::uint64_t key(const Vec3& p, long long di, long long dj, long long dk) const {
+        const auto at = [&](double x, long long d) {
+            return static_cast<std::uint64_t>(static_cast<long long>(std::floor(x / cell_)) + d);
+        };
+        return splitmix64(at(p.x(), di)) ^ splitmix64(at(p.y(), dj) * 3 + 1) ^ splitmix64(at(p.z(), dk) * 5 + 2);
     }
-    static std::uint64_t key(long long i, long long j, long long k) {
-        return splitmix64(static_cast<std::uint64_t>(i)) ^ splitmix64(static_cast<std::uint64_t>(j) * 3 + 1) ^
-               splitmix64(static_cast<std::uint64_t>(k) * 5 + 2);
-    }
-    double spacing_;
-    std::unordered_map<std::uint64_t, std::vector<Vec3>> cells_;
+    double cell_;
+    std::unordered_map<std::uint64_t, std::vector<std::pair<Vec3, int>>> cells_;
 };
 
 // A unit tangent at normal n pointing as nearly up (+z) as the surface allows.
@@ -138,12 +134,22 @@ std::vector<LeafCard> leaf_cards(const LeafInputs& in, const LeafParams& params)
     std::ranges::sort(candidates, [](const LeafCard& a, const LeafCard& b) {
         return a.key != b.key ? a.key < b.key : a.vertex < b.vertex;
     });
+    // Candidates in order of key: one that stands within half a card of a
+    // card placed already, or that reaches into the body (its base's corners,
+    // middle or tip inside: a fold of the surface over it, or a hollow), is skipped.
+    const BodyInside body(in.placed, length);
+    PointGrid anchors(length / 2.0);
     std::vector<LeafCard> cards;
-    SpacingGrid placed(length / 2.0);
     for (const LeafCard& card : candidates) {
         const Vec3& anchor = in.placed.positions[static_cast<std::size_t>(card.vertex)];
-        if (placed.near(anchor)) continue;
-        placed.add(anchor);
+        bool near = false;
+        anchors.visit_near(anchor, [&](const Vec3& q, int) { near = near || (q - anchor).norm() < length / 2.0; });
+        if (near) continue;
+        const Vec3 tip = card.base + card.axis * length, half = card.across * (kLeafAspect * length / 2.0);
+        const Vec3 blade[] = {card.base, card.base + half, card.base - half, card.base + card.axis * (length / 2.0),
+                              tip, tip + half, tip - half};
+        if (std::ranges::any_of(blade, [&](const Vec3& p) { return body.inside(p); })) continue;
+        anchors.add(anchor, card.vertex);
         cards.push_back(card);
     }
     return cards;
