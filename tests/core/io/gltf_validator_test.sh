@@ -8,7 +8,8 @@
 # only), and species packs (every plant_<id>.glb and scatter.glb) of a
 # MAP-Elites and a GA run, with and without levels of detail and wind; each
 # wind preset (--wind-preset color, uv, godot) alone, all three with levels
-# of detail, and a pack with all three.
+# of detail, and a pack with all three; foliage cards (--leaves) alone and
+# with all of these.
 # Usage: gltf_validator_test.sh MORPHOGEN SOURCE_DIR. Exit 77 (skipped) only
 # when node is not installed.
 set -euo pipefail
@@ -47,12 +48,24 @@ if "$exe" grow --random 3 --steps 10 -o refused.glb --colour --wind --wind-prese
   exit 1
 fi
 grep -q -- "--colour and --wind-preset color both write COLOR_0" refused.txt
+# --leaves: the cards' primitive, leaf material and embedded texture, alone,
+# with levels of detail, wind and every preset (uv moves the leaf's UVs to
+# TEXCOORD_2), with colour, in the branching mode, in archive and a pack.
+"$exe" grow --random 3 --steps 200 -o leaves.glb --leaves >/dev/null
+"$exe" grow --random 4 --steps 200 -o leaves_lods_wind.glb --leaves --leaf-size 0.1 --leaf-density 1 --lods 3 --wind \
+  --wind-preset uv,godot --colour --height 3 >/dev/null
+"$exe" grow --random 4 --steps 120 -o leaves_color_preset.glb --leaves --wind --wind-preset color >/dev/null
+"$exe" grow --config "$src/configs/tree.json" --random 5 -o leaves_branching.glb --leaves --lods 2 >/dev/null
+node -e 'const b=require("fs").readFileSync(process.argv[1]); const n=b.readUInt32LE(12);
+  const j=JSON.parse(b.subarray(20, 20 + n)); if (j.meshes[0].primitives.length !== 2 || j.materials[1].alphaMode !== "MASK" ||
+  !j.images || j.images[0].mimeType !== "image/png") process.exit(1);' leaves_lods_wind.glb
 
 "$exe" evolve "$src/tests/app/fixtures/engine_elites.json" --out run >/dev/null 2>&1
 "$exe" archive run --out plain_elites >/dev/null
 "$exe" archive run --out engine_elites --height 1.5 --wind >/dev/null
 "$exe" archive run --out lod_elites --lods 2 --wind >/dev/null
 "$exe" archive run --out colour_elites --lods 2 --colour >/dev/null
+"$exe" archive run --out leaf_elites --lods 2 --wind --leaves >/dev/null
 "$exe" evolve "$src/tests/app/fixtures/engine_best.json" --out engine_run >/dev/null 2>&1
 # run.export_glb of a MAP-Elites run: wind, no levels of detail.
 sed 's/"export_every": 1}/"export_every": 1, "export_glb": {"wind": true}}/' \
@@ -68,10 +81,11 @@ node -e 'const b=require("fs").readFileSync(process.argv[1]); const n=b.readUInt
 "$exe" archive run --pack pack_lods_wind --lods 3 --wind --height 2 >/dev/null
 "$exe" archive engine_run --pack pack_ga_lods --lods 2 >/dev/null
 "$exe" archive engine_run --pack pack_ga_wind --wind --wind-preset color --wind-preset uv,godot >/dev/null
-for pack in pack_plain pack_lods_wind pack_ga_lods pack_ga_wind; do
+"$exe" archive run --pack pack_leaves --leaves --lods 2 --wind >/dev/null
+for pack in pack_plain pack_lods_wind pack_ga_lods pack_ga_wind pack_leaves; do
   test -f "$pack/manifest.json"
   test -f "$pack/scatter.glb"
 done
 
-node "$src/tools/gltf/validate.js" ./*.glb run/best/*.glb plain_elites/*.glb engine_elites/*.glb lod_elites/*.glb colour_elites/*.glb \
+node "$src/tools/gltf/validate.js" ./*.glb run/best/*.glb plain_elites/*.glb engine_elites/*.glb lod_elites/*.glb colour_elites/*.glb leaf_elites/*.glb \
   engine_run/best/*.glb elites_wind_run/best/*.glb elites_colour_run/best/*.glb pack_*/*.glb
