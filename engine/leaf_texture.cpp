@@ -16,14 +16,13 @@ namespace morphogen {
 
 namespace {
 
-// x across in [-1, 1], y from base (0) to tip (1).
-bool inside_leaf(double x, double y) {
-    const double ax = std::abs(x);
-    if (y >= 0.0 && y < 0.14) return ax < 0.045;  // the stalk
+// The leaf's half width at height y (0 base, 1 tip) with x across in
+// [-1, 1]: a short stalk, then a blade pointed at both ends; 0 beyond it.
+double half_width(double y) {
+    if (y >= 0.0 && y < 0.14) return 0.045;  // the stalk
     const double s = (y - 0.1) / 0.88;
-    if (s <= 0.0 || s >= 1.0) return false;
-    const double half_width = 0.94 * std::pow(std::sin(std::numbers::pi * std::pow(s, 0.75)), 0.8);
-    return ax < half_width;
+    if (s <= 0.0 || s >= 1.0) return 0.0;
+    return 0.94 * std::pow(std::sin(std::numbers::pi * std::pow(s, 0.75)), 0.8);
 }
 
 // The blade's sRGB colour at (x, y): darker at the base, a pale midrib and side veins.
@@ -49,28 +48,35 @@ void append_bytes(void* context, void* data, int size) {
 std::vector<std::uint8_t> leaf_texture_rgba(int size) {
     std::vector<std::uint8_t> pixels(static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * 4);
     constexpr int kSub = 4;  // 4 x 4 samples a pixel: alpha is the leaf's coverage
+    std::vector<double> widths(static_cast<std::size_t>(size) * kSub);  // per row of samples, from the top
+    for (std::size_t r = 0; r < widths.size(); ++r)
+        widths[r] = half_width(1.0 - (static_cast<double>(r) + 0.5) / (static_cast<double>(size) * kSub));
     for (int row = 0; row < size; ++row)
         for (int col = 0; col < size; ++col) {
             std::uint8_t* px = &pixels[(static_cast<std::size_t>(row) * static_cast<std::size_t>(size) +
                                         static_cast<std::size_t>(col)) * 4];
-            const double x = (col + 0.5) / size * 2.0 - 1.0, y = 1.0 - (row + 0.5) / size;
             int covered = 0;
             for (int i = 0; i < kSub; ++i)
                 for (int j = 0; j < kSub; ++j)
-                    covered += inside_leaf((col + (j + 0.5) / kSub) / size * 2.0 - 1.0,
-                                           1.0 - (row + (i + 0.5) / kSub) / size);
-            leaf_colour(x, y, px);  // outside too: no dark fringe where mipmaps blend
+                    covered += std::abs((col + (j + 0.5) / kSub) / size * 2.0 - 1.0) <
+                               widths[static_cast<std::size_t>(row * kSub + i)];
+            leaf_colour((col + 0.5) / size * 2.0 - 1.0, 1.0 - (row + 0.5) / size, px);  // outside too: no dark fringe in mipmaps
             px[3] = static_cast<std::uint8_t>((covered * 255 + kSub * kSub / 2) / (kSub * kSub));
         }
     return pixels;
 }
 
-std::string leaf_texture_png() {
-    const std::vector<std::uint8_t> pixels = leaf_texture_rgba(kLeafTextureSize);
-    std::string png;
-    if (!stbi_write_png_to_func(append_bytes, &png, kLeafTextureSize, kLeafTextureSize, 4, pixels.data(),
-                                kLeafTextureSize * 4))
-        throw IoError("leaf texture: cannot encode PNG");
+const std::string& leaf_texture_png() {
+    // Drawn and encoded once a process (a thread-safe static): a pack or an
+    // archive of many plants embeds the same bytes in each.
+    static const std::string png = [] {
+        const std::vector<std::uint8_t> pixels = leaf_texture_rgba(kLeafTextureSize);
+        std::string bytes;
+        if (!stbi_write_png_to_func(append_bytes, &bytes, kLeafTextureSize, kLeafTextureSize, 4, pixels.data(),
+                                    kLeafTextureSize * 4))
+            throw IoError("leaf texture: cannot encode PNG");
+        return bytes;
+    }();
     return png;
 }
 

@@ -14,7 +14,7 @@ inline constexpr int kLeafTextureSize = 128;  // a power of two: mipmaps in ever
 // blade with a midrib and side veins on a short stalk. The same bytes every call.
 std::vector<std::uint8_t> leaf_texture_rgba(int size = kLeafTextureSize);
 
-// leaf_texture_rgba() as PNG bytes (stb_image_write); the same bytes every call.
-std::string leaf_texture_png();
+// leaf_texture_rgba() as PNG bytes (stb_image_write), made once a process.
+const std::string& leaf_texture_png();
 
 }  // namespace morphogen
