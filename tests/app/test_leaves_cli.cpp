@@ -44,7 +44,7 @@ TEST_CASE("grow --leaves writes the cards as a second primitive, the same bytes 
     CHECK(parse_glb(read_text(dir.path / "tree.glb")).nodes.at(0).extras.Get("leaves").IsNumber());
 }
 
-TEST_CASE("--leaves refusals name the option and write nothing", "[cli][leaves]") {
+TEST_CASE("leaves: refusals of --leaves name the option and write nothing", "[cli][leaves]") {
     TempDir dir("leaves-refused");
     const std::string out = q(dir.path / "x.glb");
     const struct {

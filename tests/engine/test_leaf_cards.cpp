@@ -235,7 +235,7 @@ TEST_CASE("leaf cards: refused sizes and densities", "[leaves]") {
                     std::invalid_argument);
 }
 
-TEST_CASE("leaf texture: a leaf with alpha, the same PNG every time", "[leaves]") {
+TEST_CASE("leaf texture: a leaf with alpha, and its PNG decodes to it", "[leaves]") {
     const std::vector<std::uint8_t> rgba = leaf_texture_rgba();
     const int n = kLeafTextureSize;
     REQUIRE(rgba.size() == static_cast<std::size_t>(n * n * 4));
@@ -258,7 +258,7 @@ TEST_CASE("leaf texture: a leaf with alpha, the same PNG every time", "[leaves]"
     stbi_image_free(decoded);
 }
 
-TEST_CASE("--leaves GLB: a second primitive with the leaf material, its texture and wind", "[leaves]") {
+TEST_CASE("leaf GLB: a second primitive with the leaf material, its texture and wind", "[leaves]") {
     const Leafy leafy = grow_leafy(4, GrowthMode::paper, 120);
     REQUIRE(!leafy.cards.empty());
     PlantExportOptions options;
@@ -310,7 +310,7 @@ TEST_CASE("--leaves GLB: a second primitive with the leaf material, its texture 
     CHECK(plain.images.empty());
 }
 
-TEST_CASE("--leaves with the uv wind preset reads the texture from TEXCOORD_2", "[leaves]") {
+TEST_CASE("leaf cards beside the uv wind preset: reads the texture from TEXCOORD_2", "[leaves]") {
     const Leafy leafy = grow_leafy(4, GrowthMode::paper, 120);
     PlantExportOptions options;
     options.leaves = true;
@@ -325,7 +325,7 @@ TEST_CASE("--leaves with the uv wind preset reads the texture from TEXCOORD_2", 
     CHECK(model.materials.at(1).pbrMetallicRoughness.baseColorTexture.texCoord == 2);
 }
 
-TEST_CASE("--leaves with --lods: each level keeps the first cards, as many as its share of triangles", "[leaves]") {
+TEST_CASE("leaf cards with --lods: each level keeps the first cards, as many as its share of triangles", "[leaves]") {
     const Leafy leafy = grow_leafy(6, GrowthMode::paper, 200, {.size = 0.04, .density = 1.0});
     PlantExportOptions options;
     options.leaves = true;
@@ -364,7 +364,7 @@ TEST_CASE("--leaves with --lods: each level keeps the first cards, as many as it
     CHECK(lod_leaves(10, 0.01).scale == kMaxLodLeafScale);
 }
 
-TEST_CASE("--leaves on a plant without a young lit vertex writes no leaf primitive", "[leaves]") {
+TEST_CASE("leaf cards: a plant without a young lit vertex writes no leaf primitive", "[leaves]") {
     const testing::Grown grown = testing::grow_dated(3, 0);  // the seed: every vertex born at step 0
     PlantExportOptions options;
     options.leaves = true;
