@@ -88,7 +88,7 @@ int run_bench(const BenchOptions& options) {
     const std::vector<int>& layers = grower.layers();
     std::vector<Network> networks;
     for (int i = 0; i < options.genomes; ++i)
-        networks.emplace_back(random_genome(layers, config.evolution.init_range, options.seed + i));
+        networks.emplace_back(random_genome(layers, config.growth.mode, config.evolution.init_range, options.seed + i));
     const int threads = resolve_threads(options.threads);
 
     std::vector<BenchPass> passes;

@@ -73,7 +73,7 @@ int run_gallery(const GalleryOptions& options) {
             entry.seed = options.seed + static_cast<std::uint64_t>(i);
             try {
                 const auto start = std::chrono::steady_clock::now();
-                const Genome genome = random_genome(grower.layers(), config.evolution.init_range, entry.seed);
+                const Genome genome = random_genome(grower.layers(), config.growth.mode, config.evolution.init_range, entry.seed);
                 GrowthState state = grower.grow(genome.params, workspace);
                 entry.time_ms =
                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();

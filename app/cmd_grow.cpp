@@ -80,7 +80,7 @@ int run_grow(const GrowOptions& options) {
     }
     const GenomeGrower grower(config.network, config.growth);
     const Genome genome = options.random_seed
-                              ? random_genome(grower.layers(), config.evolution.init_range, *options.random_seed)
+                              ? random_genome(grower.layers(), config.growth.mode, config.evolution.init_range, *options.random_seed)
                               : load_genome_for(grower.layers(), options.genome);
     const Network network(genome);
 

@@ -1,5 +1,6 @@
 #include "breed/session.hpp"
 
+#include "core/growth/random_genome_centre.hpp"
 #include "core/base/append_file.hpp"
 #include "core/base/atomic_file.hpp"
 #include "core/base/errors.hpp"
@@ -158,7 +159,9 @@ std::vector<std::string> BreedSession::start_grid(const std::vector<std::vector<
         const std::uint64_t number = next_plant_ + genomes.size();
         if (given == 0) {
             RandomStream stream(config_.run.seed, number);
-            genomes.push_back(random_parameters(growth_.dimension(), config_.evolution.init_range, stream));
+            genomes.push_back(random_parameters(growth_.dimension(), config_.evolution.init_range, stream,
+                                                random_genome_centre(growth_.grower().layers(),
+                                                                     growth_.grower().params().mode)));
             parents.emplace_back();
         } else {
             // Plants were added above under the lock the caller holds.

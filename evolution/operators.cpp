@@ -61,7 +61,7 @@ bool insert_child(std::vector<Individual>& population, Individual child, std::si
 
 BirthRules birth_rules(const GaParams& params) {
     return {static_cast<std::uint64_t>(params.population), params.init_range, params.crossover, params.mutation_rate,
-            params.mutation_sigma};
+            params.mutation_sigma, {}};
 }
 
 void check_shared_params(const BirthRules& r, int batch, const std::string& search) {
@@ -81,7 +81,7 @@ Individual conceive_birth(const BirthRules& rules, std::span<const Block> blocks
     Individual child;
     child.id = birth;
     if (birth < rules.population || !pick) {
-        child.params = random_parameters(dimension, rules.init_range, stream);
+        child.params = random_parameters(dimension, rules.init_range, stream, rules.centre);
         return child;
     }
     const Individual& first = pick(stream);
@@ -98,11 +98,20 @@ Individual conceive_birth(const BirthRules& rules, std::span<const Block> blocks
 }
 
 Individual conceive(std::span<const Individual> snapshot, const GaParams& params, std::span<const Block> blocks,
-                    std::size_t dimension, std::uint64_t seed, std::uint64_t birth) {
+                    std::size_t dimension, std::uint64_t seed, std::uint64_t birth, std::span<const double> centre) {
     const ParentPicker pick = [&](RandomStream& stream) -> const Individual& {
         return snapshot[tournament(snapshot, params.tournament, stream)];
     };
-    return conceive_birth(birth_rules(params), blocks, dimension, seed, birth, pick);
+    BirthRules rules = birth_rules(params);
+    rules.centre = centre;
+    return conceive_birth(rules, blocks, dimension, seed, birth, pick);
+}
+
+std::vector<double> check_centre(std::vector<double> centre, std::size_t dimension, const std::string& search) {
+    if (!centre.empty() && centre.size() != dimension)
+        throw std::invalid_argument(search + " problem out of range: random centre of size " +
+                                    std::to_string(centre.size()) + " for dimension " + std::to_string(dimension));
+    return centre;
 }
 
 std::size_t batch_size(std::uint64_t births, std::uint64_t population, int batch) {

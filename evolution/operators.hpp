@@ -56,6 +56,7 @@ struct BirthRules {
     double crossover = 0.0;        // probability a child mixes the blocks of two parents
     double mutation_rate = 0.0;    // per-parameter probability of a normal step
     double mutation_sigma = 0.0;   // standard deviation of that step
+    std::span<const double> centre;  // random parameters are shifted by this (empty: by 0)
 };
 BirthRules birth_rules(const GaParams& params);
 // Checks what every search shares (the birth rules and the batch size);
@@ -75,7 +76,11 @@ Individual conceive_birth(const BirthRules& rules, std::span<const Block> blocks
 
 // The GA's birth: conceive_birth with parents chosen by tournament on `snapshot`.
 Individual conceive(std::span<const Individual> snapshot, const GaParams& params, std::span<const Block> blocks,
-                    std::size_t dimension, std::uint64_t seed, std::uint64_t birth);
+                    std::size_t dimension, std::uint64_t seed, std::uint64_t birth,
+                    std::span<const double> centre = {});
+// `centre` if it is empty or has `dimension` entries; throws
+// std::invalid_argument naming `search` otherwise.
+std::vector<double> check_centre(std::vector<double> centre, std::size_t dimension, const std::string& search);
 
 // Births in the batch that starts at `births` done: at most `batch` and never
 // past the end of the current generation (a multiple of `population`).

@@ -17,6 +17,9 @@ public:
     // The crossover units; they must tile [0, dimension()) in order. Empty
     // means every parameter is its own block.
     virtual std::vector<Block> blocks() const { return {}; }
+    // Where random genomes are centred (docs/algorithm.md §6.3): one value per
+    // parameter, or empty for 0 everywhere.
+    virtual std::vector<double> random_centre() const { return {}; }
     // Called before a batch with the number of workers that will call
     // evaluate(); lets the problem size per-worker scratch space.
     virtual void prepare(int workers) { (void)workers; }

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
+#include <span>
 #include <vector>
 
 namespace morphogen {
@@ -60,10 +61,15 @@ private:
     std::uint64_t counter_ = 0;
 };
 
-// `count` parameters uniform in [-range, +range) (docs/algorithm.md §6.3 random genomes).
-inline std::vector<double> random_parameters(std::size_t count, double range, RandomStream& stream) {
+// `count` parameters uniform in [-range, +range) (docs/algorithm.md §6.3 random
+// genomes), each shifted by its `centre` when that is not empty (it then has
+// `count` entries). The draws are the same with or without a centre.
+inline std::vector<double> random_parameters(std::size_t count, double range, RandomStream& stream,
+                                             std::span<const double> centre = {}) {
     std::vector<double> params(count);
     for (double& p : params) p = stream.uniform(-range, range);
+    if (!centre.empty())
+        for (std::size_t i = 0; i < count; ++i) params[i] += centre[i];
     return params;
 }
 

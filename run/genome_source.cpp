@@ -3,6 +3,7 @@
 #include "core/base/errors.hpp"
 #include "evolution/rng.hpp"
 #include "core/growth/genome_io.hpp"
+#include "core/growth/random_genome_centre.hpp"
 
 namespace morphogen {
 
@@ -14,9 +15,10 @@ std::string show_layers(const std::vector<int>& layers) {
 }
 }  // namespace
 
-Genome random_genome(const std::vector<int>& layers, double init_range, std::uint64_t seed) {
+Genome random_genome(const std::vector<int>& layers, GrowthMode mode, double init_range, std::uint64_t seed) {
     RandomStream stream(seed, 0);
-    return Genome{layers, random_parameters(parameter_count(layers), init_range, stream)};
+    const std::vector<double> centre = random_genome_centre(layers, mode);
+    return Genome{layers, random_parameters(parameter_count(layers), init_range, stream, centre)};
 }
 
 Genome load_genome_for(const std::vector<int>& layers, const std::string& path) {

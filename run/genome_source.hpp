@@ -1,5 +1,6 @@
 #pragma once
 // Where a command's genome comes from: `--random SEED` or `--genome FILE`.
+#include "core/growth/growth_params.hpp"
 #include "core/growth/network/network.hpp"
 
 #include <cstdint>
@@ -8,9 +9,10 @@
 
 namespace morphogen {
 
-// Every parameter uniform in [-init_range, init_range), drawn from
-// RandomStream(seed, 0): `grow --random S` and gallery entry with seed S agree.
-Genome random_genome(const std::vector<int>& layers, double init_range, std::uint64_t seed);
+// Every parameter uniform in [-init_range, init_range) around its centre for
+// `mode` (docs/algorithm.md §6.3), drawn from RandomStream(seed, 0): `grow
+// --random S`, gallery entry with seed S and birth 0 of a run with seed S agree.
+Genome random_genome(const std::vector<int>& layers, GrowthMode mode, double init_range, std::uint64_t seed);
 
 // Loads a genome file and checks its layers match the config's (ConfigError
 // naming both if not).

@@ -3,6 +3,7 @@
 #include "core/base/atomic_file.hpp"
 #include "core/growth/genome_io.hpp"
 #include "core/growth/network/network.hpp"
+#include "core/growth/random_genome_centre.hpp"
 #include "core/io/mesh_io.hpp"
 
 #include <cstring>
@@ -26,6 +27,10 @@ GrowthProblem::GrowthProblem(const ExperimentConfig& config)
 }
 
 std::vector<Block> GrowthProblem::blocks() const { return neuron_blocks(grower_.layers()); }
+
+std::vector<double> GrowthProblem::random_centre() const {
+    return random_genome_centre(grower_.layers(), grower_.params().mode);
+}
 
 void GrowthProblem::prepare(int workers) {
     if (workspaces_.size() < static_cast<std::size_t>(workers)) workspaces_.resize(static_cast<std::size_t>(workers));

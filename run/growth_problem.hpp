@@ -23,6 +23,8 @@ public:
     std::size_t dimension() const override { return dimension_; }
     // One block per neuron (weights and threshold), as crossover exchanges them.
     std::vector<Block> blocks() const override;
+    // Branching mode: shoots of random genomes start growing (docs/algorithm.md §6.3).
+    std::vector<double> random_centre() const override;
     void prepare(int workers) override;
     // Score = fitness of the grown mesh; size = its vertex count; when the
     // config has descriptors, descriptors = its measures of that same mesh.

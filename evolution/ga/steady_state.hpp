@@ -52,6 +52,7 @@ private:
     std::uint64_t seed_;
     Problem& problem_;
     std::vector<Block> blocks_;
+    std::vector<double> centre_;  // of random genomes (Problem::random_centre)
     GaState state_;
 };
 

@@ -93,7 +93,7 @@ TEST_CASE("the estimate counts the genome's parameters as the network does", "[l
     const ResourceEstimate e = estimate_of(config, evolution_on(2));
     // [12, 5, 6, 4]: 5 * 13 + 6 * 6 + 4 * 7.
     CHECK(e.parameters == 65 + 36 + 28);
-    CHECK(e.parameters == random_genome(config.network.layers(), 1.0, 3).params.size());
+    CHECK(e.parameters == random_genome(config.network.layers(), GrowthMode::paper, 1.0, 3).params.size());
     CHECK(e.genomes.held == search_genomes(config).held);
     // Pipeline, lag 64: the population twice, max(lag, P) in flight (and in the evaluator's queue), lag - 1
     // kept births, the best.
@@ -113,7 +113,7 @@ TEST_CASE("vertex and reach bounds hold for real growths, and are reached by the
     const ResourceEstimate e = estimate_of(config, evolution_on(1));
     const GenomeGrower grower(config.network, config.growth);
     for (std::uint64_t genome_seed : {1, 2, 3, 4}) {
-        const Network network(random_genome(grower.layers(), 2.0, genome_seed));
+        const Network network(random_genome(grower.layers(), grower.params().mode, 2.0, genome_seed));
         GrowthWorkspace workspace;
         double vertex_steps = grower.seed().mesh.num_vertices();  // step 0 thinks over the seed
         const GrowthState state = grower.grow(network, workspace, [&](const GrowthState& s, int step) {

@@ -294,7 +294,16 @@ TEST_CASE("one session per directory: a second resume is refused and leaves the 
 TEST_CASE("export writes the genome and an engine-ready GLB", "[breed]") {
     TempDir tmp("breed");
     const auto s = BreedSession::create(tmp.path / "s", tiny_breed_config(), {});
-    const std::string id = grid_ids(s->state_json())[3];
+    // The grid's plant with the most faces: two levels need at least 64.
+    std::string id;
+    double faces = 0;
+    const json state = s->state_json();
+    for (const json& plant : state.at("grid"))
+        if (plant.at("measures").at("faces").get<double>() > faces) {
+            faces = plant.at("measures").at("faces").get<double>();
+            id = plant.at("id");
+        }
+    REQUIRE(faces >= 64);
     PlantExportOptions options;
     options.height_m = 4.0;
     options.lods = 2;

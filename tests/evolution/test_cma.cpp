@@ -235,7 +235,7 @@ TEST_CASE("full CMA-ES learns a rotated ellipsoid the separable model cannot", "
 
 TEST_CASE("a CMA emitter alone: random until started, ranks what the archive told, restarts", "[evolution][cma]") {
     const std::vector<Block> blocks{{0, 2}, {2, 2}};
-    const BirthRules rules{4, 2.0, 0.3, 0.05, 0.3};
+    const BirthRules rules{4, 2.0, 0.3, 0.05, 0.3, {}};
     const ParentPool none({});
     CmaSettings settings = cma_settings(cma_me);
     settings.parents = CmaParents::filter;

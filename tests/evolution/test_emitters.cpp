@@ -33,7 +33,7 @@ EmitterSpec iso_line(double share, double sigma_iso, double sigma_line,
 // Birth `birth` of `spec`'s emitter from `pool` (population 10, dimension 4, seed `seed`).
 Individual emit(const EmitterSpec& spec, std::span<const Block> blocks, std::uint64_t seed, std::uint64_t birth,
                 const ParentPool& pool) {
-    const BirthRules r{10, 2.0, 0.3, 0.05, 0.3};
+    const BirthRules r{10, 2.0, 0.3, 0.05, 0.3, {}};
     return spec.emitter->conceive(EmitterSource{r, blocks, 4, seed, pool}, birth);
 }
 
@@ -138,7 +138,7 @@ TEST_CASE("the gaussian emitter is conceive_birth with the pool's picks", "[evol
     const std::vector<Block> blocks{{0, 2}, {2, 2}};
     const Individual a = elite(1, {0.5, -1.0, 2.0, 0.0}, 1.0), b = elite(2, {1.5, 1.0, 2.0, -3.0}, 4.0);
     const ParentPool pool({&a, &b});
-    const BirthRules r{10, 2.0, 0.3, 0.05, 0.3};
+    const BirthRules r{10, 2.0, 0.3, 0.05, 0.3, {}};
     for (ParentSelection selection : {ParentSelection::uniform, ParentSelection::fitness_proportional}) {
         const EmitterSpec spec{1.0, std::make_shared<GaussianEmitter>(selection)};
         for (std::uint64_t birth = 10; birth < 60; ++birth) {

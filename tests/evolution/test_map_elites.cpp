@@ -280,7 +280,7 @@ TEST_CASE("evaluate_safely: non-finite descriptors invalidate, problems without 
 TEST_CASE("conceive_birth: random genomes without a picker, parents from the picker otherwise",
           "[evolution][operators]") {
     const std::vector<Block> blocks{{0, 2}, {2, 2}};
-    const BirthRules rules{10, 1.5, 1.0, 0.0, 0.0};  // always crossover, never mutate
+    const BirthRules rules{10, 1.5, 1.0, 0.0, 0.0, {}};  // always crossover, never mutate
     RandomStream reference(7, 25);
     const Individual random = conceive_birth(rules, blocks, 4, 7, 25, {});
     CHECK(random.params == random_parameters(4, 1.5, reference));

@@ -3,6 +3,7 @@
 // does_self_intersect (mesh_self_intersects): grown meshes never
 // self-intersect, where "allow" grows many that do.
 #include "fitness/cgal_geometry.hpp"
+#include "core/growth/random_genome_centre.hpp"
 #include "core/growth/genome_grower.hpp"
 #include "core/growth/contact/self_intersection_check.hpp"
 #include "tests/support/sanitizers.hpp"
@@ -173,13 +174,19 @@ GrowthParams tree_sizes(GrowthParams params) {
 
 // Genomes [first, first + count) grown with "touch": how many self-intersect
 // by CGAL's check (none should); how many the fail-safe rewound is reported.
-int count_touch_self_intersecting(const GrowthParams& params, std::uint64_t first, int count, double range = 2.0) {
+// With `centred`, genomes are drawn as the searches draw them
+// (docs/algorithm.md §6.3: in the branching mode their shoots start growing).
+int count_touch_self_intersecting(const GrowthParams& params, std::uint64_t first, int count, double range = 2.0,
+                                  bool centred = false) {
     const GrowthParams touch = with(params, Collisions::touch);
     const GenomeGrower grower(NetworkParams{}, touch);
+    const std::vector<double> centre = centred ? random_genome_centre(default_layers, touch.mode) : std::vector<double>{};
     GrowthWorkspace workspace;
     int bad = 0, rewound = 0;
     for (std::uint64_t g = first; g < first + count; ++g) {
-        const GrowthState state = grower.grow(Network(random_test_genome(default_layers, g, range)), workspace);
+        RandomStream stream(g, 0);
+        const Genome genome{default_layers, random_parameters(parameter_count(default_layers), range, stream, centre)};
+        const GrowthState state = grower.grow(Network(genome), workspace);
         rewound += state.steps_done < touch.steps ? 1 : 0;
         if (mesh_self_intersects(state.mesh.view())) {
             ++bad;
@@ -214,6 +221,13 @@ TEST_CASE("touch: random genomes at the default settings and at tree.json's neve
     for (const GrowthParams& settings : {GrowthParams{}, tree_sizes(GrowthParams{})})
         for (const GrowthParams& mode : {settings, branching(settings)})
             CHECK(count_touch_self_intersecting(mode, 51 + 25 * block, kTouchBlock) == 0);
+}
+
+TEST_CASE("touch: random genomes drawn as the branching searches draw them never self-intersect at tree.json's sizes",
+          "[collision][contact]") {
+    const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
+    CHECK(count_touch_self_intersecting(branching(tree_sizes(GrowthParams{})), 4242 + 25 * block, kTouchBlock, 2.0,
+                                        true) == 0);
 }
 
 TEST_CASE("touch: hostile genomes (saturated outputs or wide weights) never self-intersect", "[collision][contact]") {

@@ -29,7 +29,7 @@ ExperimentConfig small_config(int steps) {
 }
 
 Genome genome_for(const ExperimentConfig& config, std::uint64_t seed) {
-    return random_genome(config.network.layers(), config.evolution.init_range, seed);
+    return random_genome(config.network.layers(), config.growth.mode, config.evolution.init_range, seed);
 }
 
 tinygltf::Model parse_glb(const std::string& bytes) {
