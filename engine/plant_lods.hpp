@@ -16,10 +16,10 @@
 namespace morphogen {
 
 // The bound on level i's two-sided Hausdorff distance from LOD0, over LOD0's
-// bounding-box diagonal: 1 % per level (issue 37: LOD1 1 %, LOD2 2 %).
+// bounding-box diagonal: 1 % per level (LOD1 1 %, LOD2 2 %; docs/file-formats.md).
 inline double lod_distance_bound(int level) { return 0.01 * level; }
 // A level aims at half the triangles of the one before; when that leaves the
-// bound it may keep up to this ratio (the issue's 10 % slack).
+// bound it may keep up to this ratio (10 % above half).
 inline constexpr double kLodHalf = 0.5;
 inline constexpr double kLodMaxRatio = 0.55;
 inline constexpr std::size_t kMinLodFaces = 8;
