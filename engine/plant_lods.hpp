@@ -1,5 +1,5 @@
 #pragma once
-// Levels of detail of a plant (`--lods N`; docs/file-formats.md, "Levels of
+// Levels of detail of a plant (`--lods N`; docs/engine-glb.md, "Levels of
 // detail"): CGAL's edge collapse, costed by Garland-Heckbert's quadrics where
 // they keep the distance bound and otherwise by how far a collapse takes the
 // surface from LOD0 in both directions (cgal_lod_distance_cost.hpp; the

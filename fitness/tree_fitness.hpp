@@ -1,5 +1,5 @@
 #pragma once
-// The `tree` fitness (docs/fitness.md "tree"): light captured with
+// The `tree` fitness (docs/fitness-tree.md "tree"): light captured with
 // self-shading above a competitors' height, counted in full only for a tree
 // form, minus a construction cost in proportion to the volume:
 //

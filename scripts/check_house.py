@@ -5,7 +5,8 @@ its room and points to a room this room may include; no two files include
 each other (a .cpp and its .hpp count as one unit); app/ holds only commands
 and their option parsing (main.cpp, cmd_*.cpp, commands.hpp, *_options.*);
 no test name in tests/ starts with "-"; no function in run/ is longer than
-80 lines.
+80 lines; no page of docs/ is longer than 200 lines or speaks of how the
+project is worked on ("the issue", "helper").
 Prints each breach; exit 1 if any. Usage: scripts/check_house.py [PROJECT_ROOT]"""
 import os
 import re
@@ -101,6 +102,20 @@ def long_functions(path, lines):
 for path in sources('run'):
     with open(os.path.join(root, path), encoding='utf-8') as f:
         breaches.extend(long_functions(path, f.readlines()))
+# docs/ is for users: pages short enough to read, in the words of the product.
+MAX_DOC_LINES = 200
+WORKSHOP_WORDS = re.compile(r'\bthe issue\b|\bissues? #?\d+\b|\bhelpers?\b', re.IGNORECASE)
+docs = os.path.join(root, 'docs')
+for name in sorted(os.listdir(docs)) if os.path.isdir(docs) else []:
+    if not name.endswith('.md'):
+        continue
+    with open(os.path.join(docs, name), encoding='utf-8') as f:
+        lines = f.readlines()
+    if len(lines) > MAX_DOC_LINES:
+        breaches.append(f'docs/{name}: {len(lines)} lines (a page holds at most {MAX_DOC_LINES}; split it by subject)')
+    for number, line in enumerate(lines, 1):
+        if m := WORKSHOP_WORDS.search(line):
+            breaches.append(f'docs/{name}:{number}: "{m.group(0)}" speaks of the work, not the product')
 # A Catch2 test named "-..." is read as a command-line option when CTest runs it alone.
 for folder, dirs, names in os.walk(os.path.join(root, 'tests')):
     for name in sorted(names):

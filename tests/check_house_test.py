@@ -96,5 +96,16 @@ class CheckHouse(unittest.TestCase):
         self.assertEqual(code, 0, out)
 
 
+    def test_a_long_docs_page_or_workshop_words_fail(self):
+        code, out = check({'docs/a.md': '# A\n' + 'line\n' * 199})
+        self.assertEqual(code, 0, out)
+        code, out = check({'docs/a.md': '# A\n' + 'line\n' * 200})
+        self.assertEqual(code, 1)
+        self.assertIn('docs/a.md: 201 lines', out)
+        code, out = check({'docs/b.md': '# B\nAs the issue asks, this works.\n'})
+        self.assertEqual(code, 1)
+        self.assertIn('docs/b.md:2: "the issue"', out)
+
+
 if __name__ == '__main__':
     unittest.main()

@@ -2,7 +2,7 @@
 // Before anything runs: how much memory a config can need and how long one
 // evaluation (grow one genome, score the mesh) can take, as upper bounds over
 // every genome the config allows, and the limits of this machine they must
-// stay within (docs/limits.md, "Resource limits").
+// stay within (docs/limits-resources.md, "Resource limits").
 //
 // Contract:
 //  - estimate_resources() is a pure function of the config, the seed's size
