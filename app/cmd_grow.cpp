@@ -55,7 +55,7 @@ PlantRecord grown_record(const ExperimentConfig& config, const Genome& genome, M
     if (names.empty()) return record;
     try {
         const std::vector<double> values =
-            DescriptorSet(names, canopy_params_of(config.resolved.at("fitness")))(mesh);
+            DescriptorSet(names, config.fitness->canopy_params())(mesh);
         for (std::size_t i = 0; i < names.size(); ++i) record.measures.emplace_back(names[i], values[i]);
     } catch (const std::invalid_argument&) {
         // A mesh a measure cannot take keeps no measures, as in a GA run's lineage.

@@ -79,11 +79,10 @@ int run_score(const ScoreOptions& options) {
     const MeshArrays mesh = options.mesh.empty() ? grow_genome(config, options.genome) : read_mesh(options.mesh);
     require_scorable(mesh, source);
     const FitnessOutcome outcome = config.fitness->evaluate(mesh.view());
-    const nlohmann::json& fitness_section = config.resolved["fitness"];
     nlohmann::json metrics;
     nlohmann::json architecture;
     try {
-        metrics = mesh_metrics(mesh.view(), canopy_params_of(fitness_section));
+        metrics = mesh_metrics(mesh.view(), config.fitness->canopy_params());
         architecture = architecture_json(measure_architecture(mesh.view()));
     } catch (const std::logic_error& e) {  // what the measures refuse (e.g. a canopy grid too large)
         throw MeshError(source + ": " + e.what());

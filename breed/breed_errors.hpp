@@ -1,6 +1,6 @@
 #pragma once
 // What a breeding request can get wrong, each with the HTTP status the
-// server answers (docs/breed.md, "Errors"): the session throws these, the
+// server answers (docs/breed-api.md, "Errors"): the session throws these, the
 // server turns them into {"error": what()}.
 #include <stdexcept>
 #include <string>

@@ -17,7 +17,7 @@ PlantGrowth::PlantGrowth(const ExperimentConfig& config, const std::vector<std::
     : grower_(config.network, config.growth),
       dimension_(parameter_count(grower_.layers())),
       fitness_(config.fitness),
-      descriptors_(descriptors, canopy_params_of(config.resolved.at("fitness"))) {}
+      descriptors_(descriptors, config.fitness->canopy_params()) {}
 
 PlantOutcome PlantGrowth::grow(std::span<const double> params) const {
     GrowthWorkspace workspace;

@@ -1,7 +1,7 @@
 #pragma once
 // The HTTP server of `morphogen breed` (cpp-httplib, Debian's
 // libcpp-httplib-dev): the page, its assets, three.js and the JSON API over
-// one BreedSession (docs/breed.md, "The API"). Every request needs the
+// one BreedSession (docs/breed-api.md, "The API"). Every request needs the
 // session token (query `token=` or `Authorization: Bearer`); a Host or
 // Origin that is not the server's own gets 403 (DNS rebinding); bodies over
 // kMaxBreedBody get 413; every error body is {"error": "..."}.

@@ -1,5 +1,5 @@
 #pragma once
-// Levels of detail of a plant (`--lods N`; docs/file-formats.md, "Levels of
+// Levels of detail of a plant (`--lods N`; docs/engine-glb.md, "Levels of
 // detail"): CGAL's edge collapse, costed by Garland-Heckbert's quadrics where
 // they keep the distance bound and otherwise by how far a collapse takes the
 // surface from LOD0 in both directions (cgal_lod_distance_cost.hpp; the
@@ -16,10 +16,10 @@
 namespace morphogen {
 
 // The bound on level i's two-sided Hausdorff distance from LOD0, over LOD0's
-// bounding-box diagonal: 1 % per level (issue 37: LOD1 1 %, LOD2 2 %).
+// bounding-box diagonal: 1 % per level (LOD1 1 %, LOD2 2 %; docs/file-formats.md).
 inline double lod_distance_bound(int level) { return 0.01 * level; }
 // A level aims at half the triangles of the one before; when that leaves the
-// bound it may keep up to this ratio (the issue's 10 % slack).
+// bound it may keep up to this ratio (10 % above half).
 inline constexpr double kLodHalf = 0.5;
 inline constexpr double kLodMaxRatio = 0.55;
 inline constexpr std::size_t kMinLodFaces = 8;

@@ -1,6 +1,6 @@
 #pragma once
 // What an engine-ready GLB says about its plant in glTF `extras`
-// (docs/file-formats.md, "Engine-ready GLB"): where it came from and how
+// (docs/engine-glb.md, "Engine-ready GLB"): where it came from and how
 // well it did. Godot keeps extras as node metadata; other engines read them
 // from the file.
 #include <nlohmann/json.hpp>

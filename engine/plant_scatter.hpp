@@ -1,5 +1,5 @@
 #pragma once
-// The scatter of a species pack (docs/file-formats.md, "scatter.glb"): a
+// The scatter of a species pack (docs/species-pack.md, "scatter.glb"): a
 // small field of every species, laid out the same way every time. Each
 // species stands on a square grid, one node at the centre of its square,
 // which every glTF client draws; with EXT_mesh_gpu_instancing a client also

@@ -1,6 +1,6 @@
 #pragma once
 // Wind data for game engines: the `_WIND` vertex attribute of an engine-ready
-// GLB (docs/file-formats.md, "Wind data", with the sway formula), four
+// GLB (docs/wind.md, "Wind data", with the sway formula), four
 // floats per vertex in [0, 1]:
 //   x  bend: 0 at the foot rising to 1 at the farthest tip, as the square of
 //      the distance from the foot along the surface over its largest value

@@ -1,5 +1,5 @@
 #pragma once
-// A species pack (`archive RUN --pack DIR`; docs/file-formats.md, "Species
+// A species pack (`archive RUN --pack DIR`; docs/species-pack.md, "Species
 // pack"): in one directory, plant_<id>.glb for each species (the
 // engine-ready GLB, engine/plant_export.hpp), scatter.glb (a small field of
 // them all, engine/plant_scatter.hpp) and manifest.json (what each file

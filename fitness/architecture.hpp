@@ -1,6 +1,6 @@
 #pragma once
 // Measures of a plant's architecture from its level-set skeleton
-// (fitness/skeleton.hpp; docs/fitness.md "Architecture measures"): they tell
+// (fitness/skeleton.hpp; docs/fitness-measures.md "Architecture measures"): they tell
 // a branching tree from a stalk under one crown.
 //
 // - A branch is the skeleton path from a fork (a node with 2+ children) to

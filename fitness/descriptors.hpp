@@ -1,8 +1,8 @@
 #pragma once
 // Named shape measures of a grown mesh for MAP-Elites descriptors
-// (docs/fitness.md "Descriptor measures" defines each exactly). Each is a
+// (docs/fitness-measures.md "Descriptor measures" defines each exactly). Each is a
 // pure function of the mesh and the canopy parameters of the run's fitness
-// (canopy_params_of), thread-safe. A measure may be non-finite for a
+// (Fitness::canopy_params), thread-safe. A measure may be non-finite for a
 // degenerate mesh (e.g. slenderness of a zero footprint); a DescriptorSet
 // refuses such a value, so descriptors that reach a search are finite.
 #include "fitness/canopy.hpp"

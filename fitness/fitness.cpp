@@ -23,6 +23,11 @@ FitnessOutcome invalid(std::string reason) {
 }
 }  // namespace
 
+void Fitness::add_cost(FitnessCost& cost, const CostScope& scope) const {
+    function_->add_cost(cost, scope);
+    if (reject_self_intersecting_) add_self_intersection_cost(cost, scope.faces, scope.path + ".reject_self_intersecting");
+}
+
 FitnessOutcome Fitness::evaluate(MeshView mesh) const noexcept {
     evaluations_.fetch_add(1, std::memory_order_relaxed);
     try {

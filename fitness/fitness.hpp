@@ -4,17 +4,22 @@
 // config chose, checks that scores are finite, turns exceptions and
 // non-finite values into an invalid outcome, applies
 // `reject_self_intersecting`, guards functions that are not thread-safe, and
-// counts evaluations. CGAL never appears in this header.
+// counts evaluations. Each type states what scoring costs (add_cost) and
+// the canopy parameters it uses, so nothing above reads its config section
+// again. CGAL never appears in this header.
 #include "core/base/config_reader.hpp"
-#include "fitness/canopy.hpp"
 #include "core/mesh/mesh.hpp"
+#include "fitness/canopy.hpp"
+#include "fitness/cost.hpp"
 
 #include <nlohmann/json.hpp>
 
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -35,6 +40,13 @@ public:
     // May throw what evaluate() throws.
     using Terms = std::vector<std::pair<std::string, double>>;
     virtual Terms terms(MeshView) const { return {}; }
+    // Adds to `cost` the memory and time of scoring one mesh of `scope` and
+    // the caps evaluate() enforces (fitness/cost.hpp). Every type states its
+    // own: the resource estimate knows no type by name.
+    virtual void add_cost(FitnessCost& cost, const CostScope& scope) const = 0;
+    // The canopy parameters it scores with: a canopy's own, a sum's first
+    // canopy term's (depth first); none for a type without a canopy.
+    virtual std::optional<CanopyParams> canopy() const { return std::nullopt; }
 };
 
 struct FitnessOutcome {
@@ -56,6 +68,12 @@ public:
     std::uint64_t evaluations() const { return evaluations_.load(); }
     const FitnessFunction& function() const { return *function_; }
     bool reject_self_intersecting() const { return reject_self_intersecting_; }
+    // The function's cost and, with reject_self_intersecting, the test
+    // (blamed on <scope.path>.reject_self_intersecting).
+    void add_cost(FitnessCost& cost, const CostScope& scope) const;
+    // The canopy parameters of the function, else the defaults (height 10,
+    // cell 0.1): the canopy that descriptors and metrics measure.
+    CanopyParams canopy_params() const { return function_->canopy().value_or(CanopyParams{}); }
 
 private:
     std::unique_ptr<FitnessFunction> function_;
@@ -71,17 +89,25 @@ private:
 // only when there were issues.
 std::unique_ptr<Fitness> read_fitness(ObjectReader& reader);
 
-// The registry: every `type` a config may name, in documentation order.
+// A type a config may name: its name and how it reads its own keys from a
+// fitness section or a sum term (ObjectReader: every issue with its key path;
+// null when its keys have issues; reader.finish() is not its job).
+struct FitnessType {
+    std::string name;
+    std::function<std::unique_ptr<FitnessFunction>(ObjectReader&)> read;
+};
+// Adds a type after the built-in ones (docs/writing-a-fitness.md). Call it before
+// any config is read (it is not synchronised with reading). Throws
+// std::invalid_argument for an empty name, a name already taken or no reader.
+void register_fitness_type(FitnessType type);
+
+// The registry: every `type` a config may name, in documentation order, then
+// the registered ones in the order registered.
 std::vector<std::string> fitness_type_names();
 // Reads `type` and that type's own keys from `reader` (a fitness section or a
 // sum term) and builds the function; does not call reader.finish(). Returns
 // null when the type is unknown or its keys have issues.
 std::unique_ptr<FitnessFunction> read_fitness_function(ObjectReader& reader);
-
-// The canopy parameters a resolved fitness section uses: those of the section
-// itself if its type is canopy, else of its first canopy term (depth first),
-// else the defaults (height 10, cell 0.1).
-CanopyParams canopy_params_of(const nlohmann::json& resolved_fitness);
 
 // Every metric of a mesh, for reports: canopy (with `canopy`), height,
 // footprint, area, volume, vertices, faces (numbers) and self_intersecting

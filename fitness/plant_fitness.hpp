@@ -1,5 +1,5 @@
 #pragma once
-// The `plant` fitness (docs/fitness.md "plant"): Niklas's simulated plant
+// The `plant` fitness (docs/fitness-plant.md "plant"): Niklas's simulated plant
 // evolution (Niklas 1994, "Morphological evolution through complex domains of
 // fitness", PNAS 91:6772), in which a plant must catch light, hold its
 // reproductive tips high for dispersal, and pay for the mechanics of holding

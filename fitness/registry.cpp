@@ -1,6 +1,7 @@
 // The registry of fitness functions by name: each entry reads and checks its
 // own keys (ObjectReader, so every issue names its key path) and builds the
-// function. A new function is one class and one row of kTypes.
+// function, which states its own cost. A built-in function is one class and
+// one row of kTypes; one from elsewhere is registered (register_fitness_type).
 #include "fitness/fitness.hpp"
 
 #include "fitness/canopy.hpp"
@@ -11,6 +12,7 @@
 #include "fitness/tree_fitness.hpp"
 #include "fitness/tree_sections.hpp"
 
+#include <stdexcept>
 #include <utility>
 
 namespace morphogen {
@@ -26,6 +28,8 @@ public:
     explicit CanopyFunction(CanopyParams params) : params_(params) {}
     std::string type() const override { return "canopy"; }
     double evaluate(MeshView mesh) const override { return canopy_area(mesh, params_); }
+    void add_cost(FitnessCost& cost, const CostScope& scope) const override { add_canopy_cost(cost, params_, scope); }
+    std::optional<CanopyParams> canopy() const override { return params_; }
 
 private:
     CanopyParams params_;
@@ -36,6 +40,7 @@ public:
     explicit LightFunction(LightParams params) : params_(std::move(params)) {}
     std::string type() const override { return "light"; }
     double evaluate(MeshView mesh) const override { return light_captured(mesh, params_); }
+    void add_cost(FitnessCost& cost, const CostScope& scope) const override { add_light_cost(cost, params_, scope); }
 
 private:
     LightParams params_;
@@ -46,6 +51,11 @@ public:
     explicit TreeFunction(TreeFitnessParams params) : params_(std::move(params)) {}
     std::string type() const override { return "tree"; }
     double evaluate(MeshView mesh) const override { return tree_score(mesh, params_).score; }
+    // The rays of its light, and the sections and the volume as cheap as a measure.
+    void add_cost(FitnessCost& cost, const CostScope& scope) const override {
+        add_measure_cost(cost, scope, "tree sections and volume", 2);
+        add_light_cost(cost, params_.light, scope);
+    }
 
 private:
     TreeFitnessParams params_;
@@ -56,6 +66,11 @@ public:
     explicit PlantFunction(PlantFitnessParams params) : params_(std::move(params)) {}
     std::string type() const override { return "plant"; }
     double evaluate(MeshView mesh) const override { return plant_score(mesh, params_).score; }
+    // The rays of its light, and the skeleton and the moment as cheap as a measure.
+    void add_cost(FitnessCost& cost, const CostScope& scope) const override {
+        add_measure_cost(cost, scope, "plant skeleton and moment", 2);
+        add_light_cost(cost, params_.light, scope);
+    }
     Terms terms(MeshView mesh) const override {
         const PlantScore s = plant_score(mesh, params_);
         return {{"light", s.light},     {"reproduction", s.reproduction}, {"tips", s.tips},
@@ -74,10 +89,23 @@ public:
     MeasureFunction(std::string name, Measure measure) : name_(std::move(name)), measure_(measure) {}
     std::string type() const override { return name_; }
     double evaluate(MeshView mesh) const override { return measure_(mesh); }
+    void add_cost(FitnessCost& cost, const CostScope& scope) const override {
+        add_measure_cost(cost, scope, name_ + " of the mesh");
+    }
 
 private:
     std::string name_;
     Measure measure_;
+};
+
+// 1 if the mesh self-intersects: a measure that costs a self-intersection test.
+class SelfIntersectingFunction final : public FitnessFunction {
+public:
+    std::string type() const override { return "self_intersecting"; }
+    double evaluate(MeshView mesh) const override { return mesh_self_intersects(mesh) ? 1.0 : 0.0; }
+    void add_cost(FitnessCost& cost, const CostScope& scope) const override {
+        add_self_intersection_cost(cost, scope.faces, scope.path + ".type");
+    }
 };
 
 class SumFunction final : public FitnessFunction {
@@ -94,6 +122,14 @@ public:
         for (const auto& term : terms_)
             if (!term.second->thread_safe()) return false;
         return true;
+    }
+    void add_cost(FitnessCost& cost, const CostScope& scope) const override {
+        for (std::size_t i = 0; i < terms_.size(); ++i) terms_[i].second->add_cost(cost, scope.term(i));
+    }
+    std::optional<CanopyParams> canopy() const override {
+        for (const auto& term : terms_)
+            if (auto found = term.second->canopy()) return found;
+        return std::nullopt;
     }
 
 private:
@@ -157,7 +193,9 @@ std::unique_ptr<FitnessFunction> read_plant(ObjectReader& reader) {
 
 double vertex_count(MeshView mesh) { return static_cast<double>(mesh.positions.size()); }
 double face_count(MeshView mesh) { return static_cast<double>(mesh.faces.size()); }
-double self_intersecting(MeshView mesh) { return mesh_self_intersects(mesh) ? 1.0 : 0.0; }
+std::unique_ptr<FitnessFunction> read_self_intersecting(ObjectReader&) {
+    return std::make_unique<SelfIntersectingFunction>();
+}
 double trunk_ratio(MeshView mesh) { return tree_sections(mesh).trunk_ratio; }
 double upper_loops(MeshView mesh) { return static_cast<double>(tree_sections(mesh).upper_loops); }
 
@@ -183,10 +221,30 @@ const TypeEntry kTypes[] = {
     {"volume", nullptr, mesh_volume},
     {"vertices", nullptr, vertex_count},
     {"faces", nullptr, face_count},
-    {"self_intersecting", nullptr, self_intersecting},
+    {"self_intersecting", read_self_intersecting, nullptr},
     {"trunk_ratio", nullptr, trunk_ratio},
     {"upper_loops", nullptr, upper_loops},
 };
+
+// The built-in types, then the registered ones.
+std::vector<FitnessType>& types() {
+    static std::vector<FitnessType> list = [] {
+        std::vector<FitnessType> built_in;
+        for (const TypeEntry& entry : kTypes) {
+            if (entry.read) {
+                built_in.push_back({entry.name, entry.read});
+            } else {
+                const std::string name = entry.name;
+                const MeasureFunction::Measure measure = entry.measure;
+                built_in.push_back({name, [name, measure](ObjectReader&) -> std::unique_ptr<FitnessFunction> {
+                                        return std::make_unique<MeasureFunction>(name, measure);
+                                    }});
+            }
+        }
+        return built_in;
+    }();
+    return list;
+}
 
 struct ReadResult {
     std::unique_ptr<FitnessFunction> function;  // null if there were issues
@@ -200,9 +258,9 @@ ReadResult read_typed(ObjectReader& reader) {
     ReadResult result;
     if (issues.list().size() != before) return result;
     result.type_known = true;
-    for (const TypeEntry& entry : kTypes) {
+    for (const FitnessType& entry : types()) {
         if (type == entry.name) {
-            result.function = entry.read ? entry.read(reader) : std::make_unique<MeasureFunction>(type, entry.measure);
+            result.function = entry.read(reader);
             break;
         }
     }
@@ -238,9 +296,17 @@ std::unique_ptr<FitnessFunction> read_sum(ObjectReader& reader) {
 
 }  // namespace
 
+void register_fitness_type(FitnessType type) {
+    if (type.name.empty()) throw std::invalid_argument("a fitness type needs a name");
+    if (!type.read) throw std::invalid_argument("fitness type \"" + type.name + "\" needs a reader");
+    for (const FitnessType& entry : types())
+        if (entry.name == type.name) throw std::invalid_argument("fitness type \"" + type.name + "\" is already registered");
+    types().push_back(std::move(type));
+}
+
 std::vector<std::string> fitness_type_names() {
     std::vector<std::string> names;
-    for (const TypeEntry& entry : kTypes) names.emplace_back(entry.name);
+    for (const FitnessType& entry : types()) names.push_back(entry.name);
     return names;
 }
 

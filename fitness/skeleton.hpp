@@ -1,7 +1,7 @@
 #pragma once
 // The level-set skeleton of a plant mesh (a Reeb graph of geodesic distance
 // from the base, cut into bands; cf. Verroust & Lazarus 2000, Xu et al. 2007;
-// docs/fitness.md "Architecture measures"):
+// docs/fitness-measures.md "Architecture measures"):
 //
 // - vertices with equal coordinates are merged, triangles left with a
 //   repeated vertex dropped (files that split vertices still connect);

@@ -1,5 +1,5 @@
 #pragma once
-// The `tree` fitness (docs/fitness.md "tree"): light captured with
+// The `tree` fitness (docs/fitness-tree.md "tree"): light captured with
 // self-shading above a competitors' height, counted in full only for a tree
 // form, minus a construction cost in proportion to the volume:
 //
@@ -10,7 +10,7 @@
 //   B = min(upper_loops, loops_target) / loops_target
 //
 // trunk_ratio and upper_loops are the tree measures of fitness/tree_sections.hpp.
-// T and B saturate at the criteria, so nothing is gained by a thinner
+// T and B saturate at a tree's criteria (the targets), so nothing is gained by a thinner
 // trunk or more loops than a tree needs; light and cost keep the pressure on.
 // Above the target, a stem 10 % thinner is worth trunk_power × 10 % more light.
 #include "fitness/light.hpp"

@@ -1,6 +1,6 @@
 #pragma once
 // Horizontal sections of a mesh and the two numbers that say "tree"
-// (docs/fitness.md "Tree measures"; the same definitions, bit for bit in
+// (docs/fitness-measures.md "Tree measures"; the same definitions, bit for bit in
 // what they decide, as scripts/tree_shape.py, which checks any mesh file):
 //
 // - sections at N evenly spaced heights h_i = zmin + (i + 1/2) H / N,

@@ -23,7 +23,7 @@ GrowthProblem::GrowthProblem(const ExperimentConfig& config)
       descriptors_decide_validity_(config.algorithm == Algorithm::map_elites),
       keeps_exports_(config.run.export_every > 0 && !config.run.export_glb) {
     if (!config.qd.descriptors.empty())
-        descriptors_.emplace(config.qd.measure_names(), canopy_params_of(config.resolved.at("fitness")));
+        descriptors_.emplace(config.qd.measure_names(), config.fitness->canopy_params());
 }
 
 std::vector<Block> GrowthProblem::blocks() const { return neuron_blocks(grower_.layers()); }

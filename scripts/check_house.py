@@ -4,7 +4,9 @@ every file of every room, in its subfolders too: every project include names
 its room and points to a room this room may include; no two files include
 each other (a .cpp and its .hpp count as one unit); app/ holds only commands
 and their option parsing (main.cpp, cmd_*.cpp, commands.hpp, *_options.*);
-no test name in tests/ starts with "-".
+no test name in tests/ starts with "-"; no function in run/ is longer than
+80 lines; no page of docs/ is longer than 200 lines or speaks of how the
+project is worked on ("the issue", "helper").
 Prints each breach; exit 1 if any. Usage: scripts/check_house.py [PROJECT_ROOT]"""
 import os
 import re
@@ -73,6 +75,47 @@ APP_FILE = re.compile(r'(main\.cpp|commands\.hpp|cmd_\w+\.cpp|\w+_options\.(cpp|
 for path in sources('app'):
     if not APP_FILE.match(path[len('app/'):]):
         breaches.append(f'{path}: app/ holds only commands and their option parsing; move it into the room it belongs to')
+# A function of run/ (the largest room) stays readable: at most 80 lines from
+# its signature to its closing brace. A definition is found by the house's
+# layout: its signature starts in column 0 and its body ends with a "}" alone
+# in column 0.
+MAX_FUNCTION_LINES = 80
+NOT_A_FUNCTION = re.compile(r'(namespace|using|struct|class|enum|union|template|typedef|extern|static_assert)\b')
+def long_functions(path, lines):
+    start = None
+    in_body = False
+    for number, line in enumerate(lines, 1):
+        text = line.rstrip()
+        if not in_body:
+            if start is None and re.match(r'[A-Za-z_]', text) and not NOT_A_FUNCTION.match(text) and '(' in text:
+                start = number
+            if start is not None:
+                code = re.sub(r'//.*', '', text).rstrip()
+                if code.endswith(';') or (code.endswith('}') and '{' in code):
+                    start = None  # a declaration, or a body on one line
+                elif code.endswith('{'):
+                    in_body = True
+        elif text == '}':
+            if number - start + 1 > MAX_FUNCTION_LINES:
+                yield f'{path}:{start}: a function of {number - start + 1} lines (run/ allows {MAX_FUNCTION_LINES})'
+            start, in_body = None, False
+for path in sources('run'):
+    with open(os.path.join(root, path), encoding='utf-8') as f:
+        breaches.extend(long_functions(path, f.readlines()))
+# docs/ is for users: pages short enough to read, in the words of the product.
+MAX_DOC_LINES = 200
+WORKSHOP_WORDS = re.compile(r'\bthe issue\b|\bissues? #?\d+\b|\bhelpers?\b', re.IGNORECASE)
+docs = os.path.join(root, 'docs')
+for name in sorted(os.listdir(docs)) if os.path.isdir(docs) else []:
+    if not name.endswith('.md'):
+        continue
+    with open(os.path.join(docs, name), encoding='utf-8') as f:
+        lines = f.readlines()
+    if len(lines) > MAX_DOC_LINES:
+        breaches.append(f'docs/{name}: {len(lines)} lines (a page holds at most {MAX_DOC_LINES}; split it by subject)')
+    for number, line in enumerate(lines, 1):
+        if m := WORKSHOP_WORDS.search(line):
+            breaches.append(f'docs/{name}:{number}: "{m.group(0)}" speaks of the work, not the product')
 # A Catch2 test named "-..." is read as a command-line option when CTest runs it alone.
 for folder, dirs, names in os.walk(os.path.join(root, 'tests')):
     for name in sorted(names):

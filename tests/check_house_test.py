@@ -82,6 +82,30 @@ class CheckHouse(unittest.TestCase):
         code, out = check({'tests/app/test_x.cpp': 'TEST_CASE("heights (--height) are refused", "[cli]") {}\n'})
         self.assertEqual(code, 0, out)
 
+    def test_a_function_over_80_lines_in_run_fails(self):
+        body = ''.join(f'    x += {i};\n' for i in range(79))
+        long = f'int grow(int x)\n{{\n{body}}}\n'.replace('\n{\n', ' {\n', 1)
+        code, out = check({'run/limits/estimate.cpp': long})
+        self.assertEqual(code, 1)
+        self.assertIn('run/limits/estimate.cpp:1: a function of 81 lines', out)
+        short = long.replace('    x += 0;\n', '', 1)
+        code, out = check({'run/limits/estimate.cpp': 'int f(int);\nstruct S {\n};\n' + short})
+        self.assertEqual(code, 0, out)
+        # Other rooms are not held to it.
+        code, out = check({'evolution/ga/ga.cpp': long})
+        self.assertEqual(code, 0, out)
+
+
+    def test_a_long_docs_page_or_workshop_words_fail(self):
+        code, out = check({'docs/a.md': '# A\n' + 'line\n' * 199})
+        self.assertEqual(code, 0, out)
+        code, out = check({'docs/a.md': '# A\n' + 'line\n' * 200})
+        self.assertEqual(code, 1)
+        self.assertIn('docs/a.md: 201 lines', out)
+        code, out = check({'docs/b.md': '# B\nAs the issue asks, this works.\n'})
+        self.assertEqual(code, 1)
+        self.assertIn('docs/b.md:2: "the issue"', out)
+
 
 if __name__ == '__main__':
     unittest.main()

@@ -28,10 +28,10 @@ void refuse_unless(ObjectReader& reader, const char* key, const char* condition)
     if (reader.raw(key) != nullptr) reader.issues().add(reader.path_of(key), std::string("is used only with ") + condition);
 }
 
-// The signals of docs/algorithm.md §5.9. A signal that is off is left out of
-// the resolved config, with its own keys, so a branching config that does not
-// use them resolves to the same bytes as before they existed (and its
-// checkpoints still resume).
+// The signals of docs/algorithm.md §5.9. Both switches are always resolved;
+// a signal's own keys only when it is on. (Format-2 configs written before
+// the switches were resolved when off get them by migration,
+// run/config/config_migration.hpp.)
 void read_signal_params(ObjectReader& reader, GrowthParams& p) {
     p.exposure = reader.boolean("exposure", p.exposure);
     if (p.exposure) {
@@ -40,7 +40,6 @@ void read_signal_params(ObjectReader& reader, GrowthParams& p) {
         p.exposure_full_shade =
             reader.number("exposure_full_shade", p.exposure_full_shade, 0.0, 1e6, /*min_exclusive=*/true);
     } else {
-        reader.drop_resolved("exposure");
         for (const char* key : {"exposure_cell", "exposure_depth", "exposure_full_shade"})
             refuse_unless(reader, key, "growth.exposure true");
     }
@@ -48,7 +47,6 @@ void read_signal_params(ObjectReader& reader, GrowthParams& p) {
     if (p.signal_diffusion > 0) {
         p.signal_rate = reader.number("signal_rate", p.signal_rate, 0.0, 1.0, /*min_exclusive=*/true);
     } else {
-        reader.drop_resolved("signal_diffusion");
         refuse_unless(reader, "signal_rate", "growth.signal_diffusion > 0");
     }
 }

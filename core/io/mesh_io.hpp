@@ -10,7 +10,7 @@
 // first mesh: a plant's body, LOD0 of an engine export).
 // Every reader refuses, with an IoError naming the file (and line where there
 // is one), anything malformed or beyond the limits of mesh_file_types.hpp, before allocating
-// or looping over what a file merely declares (docs/limits.md, "Mesh files").
+// or looping over what a file merely declares (docs/limits-mesh-files.md, "Mesh files").
 #include "core/io/mesh_file_types.hpp"
 #include "core/mesh/mesh.hpp"
 #include "core/mesh/vertex_normals.hpp"

@@ -1,5 +1,5 @@
 #pragma once
-// The engine-ready GLB of one plant (docs/file-formats.md, "Engine-ready
+// The engine-ready GLB of one plant (docs/engine-glb.md, "Engine-ready
 // GLB"): a node an engine keys on by name, its levels of detail as child
 // nodes `<name>_LOD<i>`, glTF `extras` carried on the plant's node, and an
 // optional `_WIND` vertex attribute and copies of it where engines read them

@@ -1,5 +1,5 @@
 #pragma once
-// The emitter kinds a config names (docs/map-elites.md, "Emitters"): one row
+// The emitter kinds a config names (docs/map-elites-emitters.md, "Emitters"): one row
 // each, with the keys it reads. A new kind is one class implementing Emitter
 // (emitters.hpp) and one row here.
 #include "core/base/config_reader.hpp"
@@ -24,7 +24,7 @@ std::vector<EmitterSpec> read_emitters(const nlohmann::json& list, ConfigIssues&
 
 // What `map_elites` runs with no `emitters`: two cma_me emitters with
 // sigma0 0.2, the best setting measured for budgets of about a thousand
-// births (docs/map-elites.md, "Emitters"). As a config's list, and read.
+// births (docs/map-elites-emitters.md, "Emitters"). As a config's list, and read.
 nlohmann::json default_emitters_config();
 std::vector<EmitterSpec> default_emitters();
 

@@ -45,7 +45,7 @@
     var runName = R.name || 'run';
     document.title = runName + ' — morphogen report';
     $('title').textContent = runName;
-    // The best's skeleton measures (docs/fitness.md "Architecture measures") in one line.
+    // The best's skeleton measures (docs/fitness-measures.md "Architecture measures") in one line.
     function architectureText(a) {
       var limbs = a.limb_lengths.map(function (l, i) { return fmt(l, 3) + '/' + fmt(a.limb_thicknesses[i], 3); });
       return a.tips + ' tips, ' + a.limbs + ' limbs' + (limbs.length ? ' (length/thickness ' + limbs.join(', ') + ')' : '') +
@@ -258,7 +258,7 @@
     this.levels = [];  // {name, object, triangles} of the shown plant's LOD nodes, LOD0 first
     this.lod = 0;
     this.hasWind = false;
-    // Shared by every swaying material (docs/file-formats.md, "Wind data").
+    // Shared by every swaying material (docs/wind.md, "Wind data").
     this.wind = { windTime: { value: 0 }, windOn: { value: 0 }, windAmp: { value: 0 }, windFlutter: { value: 0 },
       windDir: { value: new THREE.Vector3(1, 0, 0) } };
     this.swaying = false;
@@ -278,7 +278,7 @@
     })();
   }
 
-  // The sway of docs/file-formats.md ("Wind data") in the vertex shader:
+  // The sway of docs/wind.md ("Wind data") in the vertex shader:
   //   p' = p + A·bend·(0.5 + 0.5·sin(ω t))·W + F·flutter·(1 − stiffness)·sin(ω_f t + 2π·phase)·n
   // with ω = 2π·0.3 s⁻¹, ω_f = 2π·2 s⁻¹; GLTFLoader names the glTF attribute
   // _WIND "_wind" (unknown attributes are lower-cased). windOn 0 leaves the

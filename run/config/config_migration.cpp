@@ -37,10 +37,23 @@ void migrate_emitters(json& config) {
             default_to(emitter, "covariance", "diagonal");
 }
 
+// Format 2 as first written left a branching config's signal switches out
+// when off; they are written out as off (algorithm.md §5.9).
+void migrate_signal_switches(json& stored) {
+    json* growth = section(stored, "growth");
+    if (growth == nullptr || !growth->contains("mode") || (*growth)["mode"] != "branching") return;
+    default_to(*growth, "exposure", false);
+    default_to(*growth, "signal_diffusion", 0);
+}
+
 }  // namespace
 
 json migrate_config(json stored) {
-    if (!stored.is_object() || stored.contains(config_format_key)) return stored;
+    if (!stored.is_object()) return stored;
+    if (stored.contains(config_format_key)) {
+        if (stored[config_format_key] == config_format_version) migrate_signal_switches(stored);
+        return stored;
+    }
     stored[config_format_key] = config_format_version;
     if (json* growth = section(stored, "growth")) {
         default_to(*growth, "collisions", "allow");

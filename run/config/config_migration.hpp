@@ -3,7 +3,9 @@
 // docs/config.md "Format versions"), and the migration of an earlier one.
 //
 // Format 2 (written): the top-level key "format_version": 2 and every key
-// that applies, defaults included.
+// that applies, defaults included. Until 2026-11-29 a branching config left
+// growth.exposure and growth.signal_diffusion out when they were off; such a
+// config is read with them written out as off (false, 0).
 // Format 1 (read): morphogen 0.1.0 and earlier. No "format_version", and
 // some defaults left out: growth.collisions ("allow"), growth.mode
 // ("paper"), evolution.algorithm ("steady_state"), evolution.schedule
@@ -22,8 +24,9 @@ namespace morphogen {
 inline constexpr int config_format_version = 2;
 inline constexpr const char* config_format_key = "format_version";
 
-// A stored config in the current format: one with "format_version" is
-// returned as it is (the reader refuses a later format); one without is
+// A stored config in the current format: one with "format_version" 2 gets
+// the signal switches format 2 left out at first (above), any other version
+// is returned as it is (the reader refuses a later format); one without is
 // format 1, returned with format_version 2 and the defaults format 1 left out
 // written out as 0.1.0 applied them, so a later change of a default never
 // changes what an old run continues with. Only adds keys; never throws (a

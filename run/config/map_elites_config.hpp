@@ -38,9 +38,10 @@ struct QdParams {
 // `descriptors` in the resolved config when it is given or the run is
 // map_elites, `archive` only for map_elites. `emitters` (MAP-Elites only;
 // docs/algorithm.md §9.8): a non-empty list of {kind, share, selection,
-// sigma_iso, sigma_line}, recorded in the resolved config only when given (so
-// configs without it resolve as before). Whether a full archive fits in memory is resource_estimate's
-// part (search_genomes counts its cells), with the other limits.
+// sigma_iso, sigma_line}, recorded in the resolved config of every
+// map_elites run (the default emitters when not given). Whether a full
+// archive fits in memory is resource_estimate's part (search_genomes counts
+// its cells), with the other limits.
 QdParams read_qd_params(ObjectReader& top, Algorithm algorithm);
 
 // "steady_state" | "map_elites".

@@ -3,10 +3,7 @@
 #include "core/base/errors.hpp"
 #include "evolution/emitters/cma/cma_emitter.hpp"
 #include "evolution/execution/pipeline.hpp"
-#include "fitness/canopy.hpp"
-#include "fitness/light.hpp"
-#include "fitness/plant_fitness.hpp"
-#include "fitness/tree_fitness.hpp"
+#include "fitness/cost.hpp"
 #include "core/growth/network/network.hpp"
 #include "evolution/execution/worker_threads.hpp"
 
@@ -20,8 +17,6 @@
 namespace morphogen {
 
 namespace {
-
-using nlohmann::json;
 
 // Bytes, measured on this build (peak RSS of runs that stress one part; see
 // docs/limits.md) and rounded up.
@@ -46,11 +41,7 @@ constexpr double vertex_fixed_bytes = 144, vertex_bytes_per_output = 16, vector_
 // (positions, normals, indices, copied about three times); the larger.
 constexpr double export_bytes_per_vertex = 160;
 constexpr double kept_mesh_bytes_per_vertex = 48;  // positions and faces (gallery)
-// Fitness memory per face of the final mesh.
-constexpr double light_tree_bytes_per_face = 200;      // CGAL AABB tree of the triangles
-constexpr double canopy_bytes_per_face = 72;           // triangles above the height
-constexpr double self_intersection_bytes_per_face = 250;
-constexpr double measure_bytes_per_face = 48;
+// What scoring costs, each fitness type states itself (fitness/cost.hpp).
 
 // Seconds of one core (development VM), rounded up from `morphogen bench`
 // and timed `grow`/`score` runs on meshes of 2 000 to 400 000 vertices.
@@ -61,31 +52,8 @@ constexpr double second_per_output = 5e-9;        // gather, per output of a ver
 constexpr double second_per_vertex_step = 1e-6;
 constexpr double second_per_split = 1e-6;         // a new vertex
 constexpr double second_per_param_build = 2e-9;   // building the network from a genome
-constexpr double light_tree_second_per_face = 1.5e-6;
-constexpr double light_ray_second = 0.5e-6, light_ray_second_per_level = 0.1e-6;  // + log2(faces) levels
-constexpr double canopy_second_per_cell = 100e-9, canopy_second_per_face = 200e-9;
-constexpr double self_intersection_second_per_face = 3e-6;
-constexpr double measure_second_per_face = 50e-9;
 
-const json& at_or_null(const json& object, const char* key) {
-    static const json null;
-    return object.is_object() && object.contains(key) ? object[key] : null;
-}
-
-std::string group(double n) {
-    char text[64];
-    if (n != std::floor(n) || !(n < 1e15)) {
-        std::snprintf(text, sizeof text, "%.3g", n);
-        return text;
-    }
-    std::snprintf(text, sizeof text, "%.0f", n);
-    std::string digits = text, out;
-    for (std::size_t i = 0; i < digits.size(); ++i) {
-        if (i > 0 && (digits.size() - i) % 3 == 0) out += ',';
-        out += digits[i];
-    }
-    return out;
-}
+std::string group(double n) { return group_digits(n); }
 
 std::string seconds_text(double s) {
     char text[64];
@@ -98,102 +66,25 @@ std::string seconds_text(double s) {
 
 // The box a plant stays in: the seed's, grown by the farthest a vertex can
 // move (docs/algorithm.md §5.2: k * drive <= min(speed, budget / total) * drive,
-// drive <= 0.5 and drive <= total), clamped at the ground.
-struct Reach {
-    Vec3 lo, hi;
-    double width() const { return (hi - lo).norm(); }
-};
-
-Reach plant_reach(const SeedExtent& seed, const GrowthParams& g) {
+// drive <= 0.5 and drive <= total), clamped at the ground; and the most faces.
+CostScope plant_scope(const SeedExtent& seed, const GrowthParams& g, double faces) {
     const double step = std::min(0.5 * g.speed, g.budget);
     const double d = step * static_cast<double>(g.steps);
-    Reach r{seed.lo.array() - d, seed.hi.array() + d};
+    CostScope scope;
+    scope.faces = faces;
+    scope.lo = seed.lo.array() - d;
+    scope.hi = seed.hi.array() + d;
     if (g.ground) {
-        r.lo.z() = std::max(r.lo.z(), std::min(0.0, seed.lo.z()));
-        r.hi.z() = std::max(r.hi.z(), 0.0);
+        scope.lo.z() = std::max(scope.lo.z(), std::min(0.0, seed.lo.z()));
+        scope.hi.z() = std::max(scope.hi.z(), 0.0);
     }
-    return r;
+    scope.extent_keys = {"growth.steps", "growth.speed", "growth.budget", "growth.seed_radius"};
+    return scope;
 }
-
-const std::vector<std::string> reach_keys{"growth.steps", "growth.speed", "growth.budget", "growth.seed_radius"};
 
 std::vector<std::string> with(std::vector<std::string> first, const std::vector<std::string>& more) {
     first.insert(first.end(), more.begin(), more.end());
     return first;
-}
-
-// Memory and time of scoring one mesh with a resolved fitness section.
-struct FitnessCost {
-    double bytes = 0;  // the most any term needs at once (terms run one after another)
-    std::vector<EstimatePart> work;
-    std::vector<HardCap> caps;
-};
-
-void add_self_intersection(FitnessCost& cost, double faces, const std::string& why_key) {
-    cost.bytes = std::max(cost.bytes, faces * self_intersection_bytes_per_face);
-    cost.work.push_back({"self-intersection test of " + group(faces) + " faces", {why_key, "growth.max_vertices"},
-                         faces * self_intersection_second_per_face});
-}
-
-void add_canopy(FitnessCost& cost, double cell, const std::string& path, double faces, const Reach& reach) {
-    const double cells =
-        ((reach.hi.x() - reach.lo.x()) / cell + 3) * ((reach.hi.y() - reach.lo.y()) / cell + 3);
-    const std::vector<std::string> keys = with({path + ".cell"}, reach_keys);
-    cost.bytes = std::max(cost.bytes, cells + faces * canopy_bytes_per_face);
-    cost.work.push_back({"canopy grid of up to " + group(cells) + " cells (" + path + ")", keys,
-                         cells * canopy_second_per_cell + faces * canopy_second_per_face});
-    cost.caps.push_back({"canopy grid cells (" + path + ".cell over a plant up to " +
-                             group(std::ceil(std::max(reach.hi.x() - reach.lo.x(), reach.hi.y() - reach.lo.y()))) +
-                             " wide)",
-                         keys, cells, static_cast<double>(canopy_max_cells)});
-}
-
-void add_fitness(FitnessCost& cost, const json& section, const std::string& path, double faces, const Reach& reach) {
-    const std::string type = at_or_null(section, "type").is_string() ? section["type"].get<std::string>() : "canopy";
-    if (type == "sum") {
-        const json& terms = at_or_null(section, "terms");
-        for (std::size_t i = 0; i < terms.size(); ++i)
-            add_fitness(cost, terms[i], path + ".terms[" + std::to_string(i) + "]", faces, reach);
-    } else if (type == "canopy") {
-        const json& cell = at_or_null(section, "cell");
-        add_canopy(cost, cell.is_number() ? cell.get<double>() : CanopyParams{}.cell, path, faces, reach);
-    } else if (type == "light" || type == "tree" || type == "plant") {
-        // A tree or plant casts the rays of its light (its own defaults) and
-        // takes sections and the volume, or the skeleton and the moment, as
-        // cheap as a measure.
-        LightParams p = type == "tree" ? TreeFitnessParams{}.light : type == "plant" ? PlantFitnessParams{}.light : LightParams{};
-        if (type != "light") {
-            cost.bytes = std::max(cost.bytes, faces * measure_bytes_per_face);
-            cost.work.push_back({type == "tree" ? "tree sections and volume" : "plant skeleton and moment", {path + ".type"},
-                                 2 * faces * measure_second_per_face});
-        }
-        if (const json& e = at_or_null(section, "elevations_deg"); e.is_array()) p.elevations_deg = e.get<std::vector<double>>();
-        if (const json& a = at_or_null(section, "azimuths_deg"); a.is_array()) p.azimuths_deg = a.get<std::vector<double>>();
-        if (const json& s = at_or_null(section, "spacing"); s.is_number()) p.spacing = s.get<double>();
-        // In a stand the rays meet a tree of the plant and its eight copies.
-        const json& stand = at_or_null(section, "stand_spacing");
-        const double scene_faces = stand.is_number() && stand.get<double>() > 0.0 ? 9 * faces : faces;
-        double suns = 0;
-        for (double e : p.elevations_deg) suns += e == 90.0 ? 1.0 : static_cast<double>(p.azimuths_deg.size());
-        // Rays per sun: the lattice covers the projected box of the mesh, whose
-        // sides are at most the box's diagonal; light.cpp adds at most 3 per side.
-        const double side = reach.width() / p.spacing + 3;
-        const double rays = side * side;
-        const std::vector<std::string> keys = with({path + ".spacing"}, reach_keys);
-        cost.bytes = std::max(cost.bytes, scene_faces * light_tree_bytes_per_face);
-        const double per_ray = light_ray_second + light_ray_second_per_level * std::log2(scene_faces + 2);
-        cost.work.push_back({"light: " + group(suns) + " suns x up to " + group(rays) + " rays (" + path + ")",
-                             with(keys, {path + ".elevations_deg", path + ".azimuths_deg"}),
-                             suns * rays * per_ray + scene_faces * light_tree_second_per_face});
-        cost.caps.push_back({"light rays per sun (" + path + ".spacing " + group(p.spacing) +
-                                 " over a plant up to " + group(std::ceil(reach.width())) + " wide)",
-                             keys, rays, light_max_rays_per_sun});
-    } else if (type == "self_intersecting") {
-        add_self_intersection(cost, faces, path + ".type");
-    } else {  // height, footprint, area, volume, vertices, faces
-        cost.bytes = std::max(cost.bytes, faces * measure_bytes_per_face);
-        cost.work.push_back({type + " of the mesh", {path + ".type"}, faces * measure_second_per_face});
-    }
 }
 
 const std::vector<std::string> network_keys{"network.hidden", "network.outputs"};
@@ -308,17 +199,12 @@ SearchGenomes search_genomes(const ExperimentConfig& config) {
     return {2 * P + 2 * flight + pending + 3, P + pending + 1};
 }
 
-ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedExtent& seed, const Workload& w) {
-    ResourceEstimate e;
-    const std::vector<int> layers = config.network.layers();
-    e.parameters = parameter_count(layers);
-    const double D = static_cast<double>(e.parameters);
-    const double N = config.network.outputs;
-    const GrowthParams& g = config.growth;
-    const double threads = std::max(1, w.threads);
+namespace {
 
-    // Vertices: at most 3V - 4 after a step (one split per face), never past
-    // max_vertices by splitting (a seed may start above it).
+// Vertices: at most 3V - 4 after a step (one split per face), never past
+// max_vertices by splitting (a seed may start above it). Sets the vertex
+// counts of `e`; returns the most vertices.
+double bound_vertices(ResourceEstimate& e, const GrowthParams& g, const SeedExtent& seed) {
     const double cap = std::max(seed.vertices, static_cast<double>(g.max_vertices));
     double v = seed.vertices;
     int t = 0;
@@ -328,11 +214,11 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
     }
     e.vertex_steps += v * static_cast<double>(g.steps - t);
     e.max_vertices = v;
-    const double faces = std::max(0.0, 2 * v - 4);
-    const Reach reach = plant_reach(seed, g);
-    e.max_width = reach.width();
+    return v;
+}
 
-    // Work of one evaluation.
+void add_growth_work(ResourceEstimate& e, const GrowthParams& g, const SeedExtent& seed, double D, double N) {
+    const double v = e.max_vertices;
     const double per_vertex_step = D * second_per_mac + N * second_per_output + second_per_vertex_step;
     const std::vector<std::string> growth_keys{"growth.max_vertices", "growth.split_area", "growth.steps"};
     e.work.push_back({"growth: up to " + group(e.vertex_steps) + " vertex-steps (" + std::to_string(g.steps) +
@@ -341,23 +227,29 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
                                                                   : with(growth_keys, network_keys),
                       D * second_per_param_build + e.vertex_steps * per_vertex_step +
                           (v - seed.vertices) * second_per_split});
-    FitnessCost fitness;
-    const json& reject = at_or_null(at_or_null(config.resolved, "fitness"), "reject_self_intersecting");
-    if (w.scores) add_fitness(fitness, at_or_null(config.resolved, "fitness"), "fitness", faces, reach);
-    if (w.scores && reject.is_boolean() && reject.get<bool>())
-        add_self_intersection(fitness, faces, "fitness.reject_self_intersecting");
-    if (w.metrics) {  // score's report: every measure, self-intersection, canopy
-        add_self_intersection(fitness, faces, "growth.max_vertices");
-        const CanopyParams c = canopy_params_of(at_or_null(config.resolved, "fitness"));
-        FitnessCost metrics;
-        add_canopy(metrics, c.cell, "fitness", faces, reach);
-        fitness.bytes = std::max(fitness.bytes, metrics.bytes);
-        fitness.work.push_back(metrics.work.front());
-    }
-    e.work.insert(e.work.end(), fitness.work.begin(), fitness.work.end());
-    e.caps = fitness.caps;
+}
 
-    // Memory at the peak.
+// Scoring one mesh: what the fitness states, and for score's report every
+// measure, the self-intersection test and the canopy of the metrics.
+FitnessCost scoring_cost(const ExperimentConfig& config, const Workload& w, const CostScope& scope) {
+    FitnessCost cost;
+    if (w.scores && config.fitness) config.fitness->add_cost(cost, scope);
+    if (w.metrics) {
+        add_self_intersection_cost(cost, scope.faces, "growth.max_vertices");
+        FitnessCost metrics;
+        add_canopy_cost(metrics, config.fitness ? config.fitness->canopy_params() : CanopyParams{}, scope);
+        cost.need_bytes(metrics.bytes);
+        cost.work.push_back(metrics.work.front());
+    }
+    return cost;
+}
+
+// Memory of the evaluations at the peak: the program, growth workspaces,
+// networks, fitness evaluations, files being written, meshes kept.
+void add_evaluation_memory(ResourceEstimate& e, const Workload& w, double fitness_bytes, double D, double N) {
+    const double v = e.max_vertices;
+    const double threads = std::max(1, w.threads);
+    const double faces = std::max(0.0, 2 * v - 4);
     const std::vector<std::string> thread_keys{"run.threads"};
     e.memory.push_back({"the program itself", {}, base_bytes});
     const double vertex_bytes = vector_slack * (vertex_fixed_bytes + vertex_bytes_per_output * N);
@@ -367,9 +259,9 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
                         threads * v * vertex_bytes});
     e.memory.push_back({group(threads) + " network(s) of " + group(D) + " parameters",
                         with(network_keys, thread_keys), threads * 3 * 8 * D});
-    if (fitness.bytes > 0)
+    if (fitness_bytes > 0)
         e.memory.push_back({group(threads) + " fitness evaluation(s) of up to " + group(faces) + " faces",
-                            with({"growth.max_vertices", "fitness.type"}, thread_keys), threads * fitness.bytes});
+                            with({"growth.max_vertices", "fitness.type"}, thread_keys), threads * fitness_bytes});
     if (w.writers > 0)  // evolve grows the best again to export it
         e.memory.push_back({group(w.writers) + " mesh file(s) of up to " + group(v) + " vertices being written",
                             {"growth.max_vertices", "growth.split_area"},
@@ -377,60 +269,83 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
     if (w.kept_meshes > 0)
         e.memory.push_back({group(w.kept_meshes) + " meshes of up to " + group(v) + " vertices kept for the sheet",
                             {"growth.max_vertices"}, w.kept_meshes * v * kept_mesh_bytes_per_vertex});
-    if (w.evolution) {
-        // Genome memory is population x parameters: name first whichever is
-        // further above its default.
-        const double default_parameters = static_cast<double>(parameter_count(NetworkParams{}.layers()));
-        const bool elites = config.algorithm == Algorithm::map_elites;
-        const double genomes = elites ? static_cast<double>(config.qd.cells()) : config.evolution.population;
-        const bool population_first = genomes / double(GaParams{}.population) >= D / default_parameters;
-        const auto genome_keys = [&](const std::vector<std::string>& search_keys) {
-            return population_first ? with(search_keys, network_keys) : with(network_keys, search_keys);
-        };
-        // A MAP-Elites archive's size is set by its cells: the bins of a grid, archive.cells of a CVT.
-        const std::string cells_key = config.qd.archive == ArchiveKind::cvt ? "archive.cells" : "descriptors";
-        e.genomes = search_genomes(config);
-        e.memory.push_back({group(e.genomes.held) +
-                                (elites ? " genomes (a full archive of " + group(genomes) +
-                                              " cells twice, births in flight, best) x "
-                                        : std::string(" genomes (population, births in flight, best) x ")) +
-                                group(D) + " parameters",
-                            genome_keys(elites ? std::vector<std::string>{cells_key, in_flight_key(config.evolution)}
-                                               : std::vector<std::string>{"evolution.population",
-                                                                          in_flight_key(config.evolution)}),
-                            e.genomes.held * (8 * D + genome_overhead)});
-        // Births that could become the exported best keep their export files
-        // until they are inserted: at most kMaxKeepingBirths in flight.
-        if (config.run.export_every > 0) {
-            const double kept =
-                std::min(births_in_flight(config.evolution), static_cast<double>(kMaxKeepingBirths));
-            e.memory.push_back({group(kept) + " births in flight keeping the files of a mesh of up to " + group(v) +
-                                    " vertices to export",
-                                {"growth.max_vertices", "run.export_every"}, kept * v * export_bytes_per_vertex});
-        }
-        // CMA emitters with a full covariance: C, its eigenvectors, the
-        // eigensolver's copy and the update's new C, n x n doubles each; C goes
-        // into every checkpoint too.
-        double full_matrices = 0;
-        if (elites)
-            for (const EmitterSpec& emitter : config.qd.emitters)
-                full_matrices += static_cast<double>(emitter.emitter->square_matrices());
-        if (full_matrices > 0)
-            e.memory.push_back({group(full_matrices) + " full covariance matrices of " + group(D) + " x " + group(D) +
-                                    " (C, its eigenvectors, the solver's and the update's copies)",
-                                with({"emitters"}, network_keys), full_matrices * 4 * 8 * D * D});
-        const double kept = e.genomes.checkpointed;
-        const double rows = static_cast<double>(config.run.generations) + 1;
-        const double header = kept * checkpoint_text_per_genome + rows * checkpoint_text_per_row + checkpoint_fixed;
-        e.checkpoint_bytes = (kept + full_matrices * D) * D * checkpoint_bytes_per_param + header;
-        const double tree = kept * checkpoint_tree_per_genome + rows * checkpoint_tree_per_row + checkpoint_fixed;
-        e.memory.push_back({"writing or reading a checkpoint of up to " + format_bytes(e.checkpoint_bytes) + " (" +
-                                group(kept) + " genomes, " + group(rows) + " history rows)",
-                            genome_keys(elites ? std::vector<std::string>{cells_key, "run.generations"}
-                                               : std::vector<std::string>{"evolution.population", "run.generations"}),
-                            e.checkpoint_bytes + checkpoint_texts_alive * header + checkpoint_trees_alive * tree +
-                                rows * history_row_bytes});
+}
+
+// Memory of the search (evolve and resume): its genomes, the exports births
+// keep, CMA's matrices, and writing or reading a checkpoint; sets the
+// checkpoint's size.
+void add_search_memory(ResourceEstimate& e, const ExperimentConfig& config, double D) {
+    const double v = e.max_vertices;
+    // Genome memory is population x parameters: name first whichever is
+    // further above its default.
+    const double default_parameters = static_cast<double>(parameter_count(NetworkParams{}.layers()));
+    const bool elites = config.algorithm == Algorithm::map_elites;
+    const double genomes = elites ? static_cast<double>(config.qd.cells()) : config.evolution.population;
+    const bool population_first = genomes / double(GaParams{}.population) >= D / default_parameters;
+    const auto genome_keys = [&](const std::vector<std::string>& search_keys) {
+        return population_first ? with(search_keys, network_keys) : with(network_keys, search_keys);
+    };
+    // A MAP-Elites archive's size is set by its cells: the bins of a grid, archive.cells of a CVT.
+    const std::string cells_key = config.qd.archive == ArchiveKind::cvt ? "archive.cells" : "descriptors";
+    e.genomes = search_genomes(config);
+    e.memory.push_back({group(e.genomes.held) +
+                            (elites ? " genomes (a full archive of " + group(genomes) +
+                                          " cells twice, births in flight, best) x "
+                                    : std::string(" genomes (population, births in flight, best) x ")) +
+                            group(D) + " parameters",
+                        genome_keys(elites ? std::vector<std::string>{cells_key, in_flight_key(config.evolution)}
+                                           : std::vector<std::string>{"evolution.population",
+                                                                      in_flight_key(config.evolution)}),
+                        e.genomes.held * (8 * D + genome_overhead)});
+    // Births that could become the exported best keep their export files
+    // until they are inserted: at most kMaxKeepingBirths in flight.
+    if (config.run.export_every > 0) {
+        const double kept =
+            std::min(births_in_flight(config.evolution), static_cast<double>(kMaxKeepingBirths));
+        e.memory.push_back({group(kept) + " births in flight keeping the files of a mesh of up to " + group(v) +
+                                " vertices to export",
+                            {"growth.max_vertices", "run.export_every"}, kept * v * export_bytes_per_vertex});
     }
+    // CMA emitters with a full covariance: C, its eigenvectors, the
+    // eigensolver's copy and the update's new C, n x n doubles each; C goes
+    // into every checkpoint too.
+    double full_matrices = 0;
+    if (elites)
+        for (const EmitterSpec& emitter : config.qd.emitters)
+            full_matrices += static_cast<double>(emitter.emitter->square_matrices());
+    if (full_matrices > 0)
+        e.memory.push_back({group(full_matrices) + " full covariance matrices of " + group(D) + " x " + group(D) +
+                                " (C, its eigenvectors, the solver's and the update's copies)",
+                            with({"emitters"}, network_keys), full_matrices * 4 * 8 * D * D});
+    const double kept = e.genomes.checkpointed;
+    const double rows = static_cast<double>(config.run.generations) + 1;
+    const double header = kept * checkpoint_text_per_genome + rows * checkpoint_text_per_row + checkpoint_fixed;
+    e.checkpoint_bytes = (kept + full_matrices * D) * D * checkpoint_bytes_per_param + header;
+    const double tree = kept * checkpoint_tree_per_genome + rows * checkpoint_tree_per_row + checkpoint_fixed;
+    e.memory.push_back({"writing or reading a checkpoint of up to " + format_bytes(e.checkpoint_bytes) + " (" +
+                            group(kept) + " genomes, " + group(rows) + " history rows)",
+                        genome_keys(elites ? std::vector<std::string>{cells_key, "run.generations"}
+                                           : std::vector<std::string>{"evolution.population", "run.generations"}),
+                        e.checkpoint_bytes + checkpoint_texts_alive * header + checkpoint_trees_alive * tree +
+                            rows * history_row_bytes});
+}
+
+}  // namespace
+
+ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedExtent& seed, const Workload& w) {
+    ResourceEstimate e;
+    e.parameters = parameter_count(config.network.layers());
+    const double D = static_cast<double>(e.parameters);
+    const double N = config.network.outputs;
+    const double v = bound_vertices(e, config.growth, seed);
+    const CostScope scope = plant_scope(seed, config.growth, std::max(0.0, 2 * v - 4));
+    e.max_width = scope.width();
+    add_growth_work(e, config.growth, seed, D, N);  // work of one evaluation
+    const FitnessCost fitness = scoring_cost(config, w, scope);
+    e.work.insert(e.work.end(), fitness.work.begin(), fitness.work.end());
+    e.caps = fitness.caps;
+    add_evaluation_memory(e, w, fitness.bytes, D, N);  // memory at the peak
+    if (w.evolution) add_search_memory(e, config, D);
     return e;
 }
 

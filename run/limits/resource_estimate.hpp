@@ -2,7 +2,7 @@
 // Before anything runs: how much memory a config can need and how long one
 // evaluation (grow one genome, score the mesh) can take, as upper bounds over
 // every genome the config allows, and the limits of this machine they must
-// stay within (docs/limits.md, "Resource limits").
+// stay within (docs/limits-resources.md, "Resource limits").
 //
 // Contract:
 //  - estimate_resources() is a pure function of the config, the seed's size
@@ -20,14 +20,17 @@
 //  - resource_issues() turns every exceeded limit into a ConfigIssue whose
 //    path names the config keys responsible and whose message gives the
 //    estimate, how it is made up, the limit and how to raise it.
-//  - The hard caps that the fitness functions enforce while scoring
-//    (light_max_rays_per_sun, canopy_max_cells) are checked here with the same
-//    numbers, so a config that passes never has a plant refused by them;
-//    --no-limits skips the check (plants beyond a cap then score invalid).
+//  - Scoring is costed by the config's fitness itself
+//    (FitnessFunction::add_cost): its memory, its time and the hard caps it
+//    enforces while scoring (light_max_rays_per_sun, canopy_max_cells), with
+//    the same numbers, so a config that passes never has a plant refused by
+//    them; --no-limits skips the check (plants beyond a cap then score
+//    invalid).
 //  - The genomes the search holds are counted in one place,
 //    search_genomes(): a MAP-Elites archive adds its cells there.
 #include "core/base/config_reader.hpp"
 #include "core/growth/seeds/seeds.hpp"
+#include "fitness/cost.hpp"
 #include "run/config/experiment_config.hpp"
 
 #include <cstdint>
@@ -78,19 +81,11 @@ struct Workload {
 // resolved; threads beyond the births in flight evaluate nothing).
 Workload evolution_workload(const ExperimentConfig& config);
 
-// One contribution to an estimate, with the keys that decide it.
-struct EstimatePart {
-    std::string what;                // e.g. "growth workspaces (2 threads x 4000 vertices)"
-    std::vector<std::string> keys;   // config key paths, most responsible first
-    double amount = 0;               // bytes or seconds
-};
-
-// A bound the fitness code enforces itself while scoring.
-struct HardCap {
-    std::string what;                // e.g. "light rays per sun at fitness.spacing"
-    std::vector<std::string> keys;
-    double needed = 0, cap = 0;
-};
+// One contribution to an estimate, with the keys that decide it, and a bound
+// the fitness code enforces itself while scoring: the fitness's own types,
+// since every fitness type states its cost (fitness/cost.hpp).
+using EstimatePart = CostPart;
+using HardCap = CostCap;
 
 // The genomes of the search, the one place an archive of elites would add
 // its cells (both in memory and in the checkpoint).

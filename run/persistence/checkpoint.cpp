@@ -256,6 +256,70 @@ void save_checkpoint(const std::filesystem::path& path, const RunState& state) {
     write_file_atomically(path, parts);
 }
 
+namespace {
+
+// "checkpoint <path> refused: <why>".
+struct Refusal {
+    std::string source;
+    CheckpointError operator()(const std::string& why) const {
+        return CheckpointError("checkpoint " + source + " refused: " + why);
+    }
+};
+
+// The content's config, read and checked to be a resolved one. A config
+// without format_version is of format 1 (0.1.0's checkpoints, versions 1 and
+// 2) and must hold all of what it migrates to; a versioned one must be
+// exactly what it migrates to (run/config/config_migration.hpp: the keys
+// format 2 left out at first). Version 1 is also how tools seal an edited
+// content (checkpoint_text), so it may hold either format.
+ExperimentConfig stored_config(const json& stored, const Refusal& refuse) {
+    const bool current = stored.is_object() && stored.contains(config_format_key);
+    const json migrated = migrate_config(stored);
+    ExperimentConfig config;
+    try {
+        config = read_experiment_config(migrated, "checkpoint config");
+    } catch (const ConfigError& e) {
+        throw refuse(std::string("its config is not valid: ") + e.what());
+    }
+    if (current ? config.resolved != migrated : !holds_all_of(config.resolved, stored))
+        throw refuse("its config is not a resolved config");
+    return config;
+}
+
+// The births conceived but not yet inserted, the search's state, the history
+// rows, lineage.csv's length and hash and the elapsed time.
+void read_run_content(RunState& state, const json& content, const ExperimentConfig& config,
+                      GenomeBlobReader* genomes, const Refusal& refuse) {
+    const std::size_t dimension = parameter_count(config.network.layers());
+    const auto P = static_cast<std::uint64_t>(config.evolution.population);
+    // Before the search state, whose reader checks that every genome was taken.
+    if (content.contains("pending")) {
+        const json& pending = content.at("pending");
+        if (!pending.is_array() || pending.empty()) throw refuse("its pending births are not a non-empty array");
+        for (std::size_t i = 0; i < pending.size(); ++i)
+            state.pending.push_back(
+                individual_from_json(pending[i], dimension, "pending[" + std::to_string(i) + "]", genomes));
+    }
+    const SearchKind& search = search_kind(config.algorithm);
+    if (!content.contains(search.key))
+        throw refuse(std::string("its config is a ") + algorithm_name(config.algorithm) + " run but it holds no " +
+                     search.key + " state");
+    state.search = search.load(content.at(search.key), config, dimension, genomes);
+    for (const json& row : content.at("history")) state.history.push_back(history_row_from_json(row));
+    if (state.history.size() != state.births() / P)
+        throw refuse(std::to_string(state.history.size()) + " history rows for " + std::to_string(state.births()) +
+                     " births");
+    for (const HistoryRow& row : state.history)
+        if (row.qd != search.qd_history) throw refuse("its history rows do not fit its algorithm");
+    for (std::size_t g = 0; g < state.history.size(); ++g)
+        if (state.history[g].generation != g) throw refuse("history rows out of order");
+    state.lineage_bytes = content.at("lineage").at("bytes").get<std::uint64_t>();
+    state.lineage_hash = content.at("lineage").at("hash").get<std::string>();
+    state.elapsed_s = content.at("elapsed_s").get<double>();
+}
+
+}  // namespace
+
 RunState load_checkpoint(const std::filesystem::path& path) {
     std::string text;
     try {
@@ -265,30 +329,15 @@ RunState load_checkpoint(const std::filesystem::path& path) {
     }
     const Envelope envelope = open_envelope(text, path.string());
     const json& content = envelope.content;
-    auto refuse = [&](const std::string& why) -> CheckpointError {
-        return CheckpointError("checkpoint " + path.string() + " refused: " + why);
-    };
+    const Refusal refuse{path.string()};
     RunState state;
     try {
-        // A config without format_version is of format 1 (0.1.0's checkpoints,
-        // versions 1 and 2) and migrated (run/config/config_migration.hpp); version 1
-        // is also how tools seal an edited content (checkpoint_text), so it
-        // may hold either format.
         const json& stored = content.at("config");
-        const bool current = stored.is_object() && stored.contains(config_format_key);
         state.seed = content.at("seed").get<std::uint64_t>();
-        ExperimentConfig config;
-        try {
-            config = read_experiment_config(migrate_config(stored), "checkpoint config");
-        } catch (const ConfigError& e) {
-            throw refuse(std::string("its config is not valid: ") + e.what());
-        }
-        if (current ? config.resolved != stored : !holds_all_of(config.resolved, stored))
-            throw refuse("its config is not a resolved config");
+        const ExperimentConfig config = stored_config(stored, refuse);
         state.config = config.resolved;
         if (config.run.seed != state.seed) throw refuse("its seed differs from its config's run.seed");
         const std::size_t dimension = parameter_count(config.network.layers());
-        const auto P = static_cast<std::uint64_t>(config.evolution.population);
         if (content.size() != (content.contains("pending") ? 7u : 6u)) throw refuse("unexpected keys in its content");
         // From format 2 the genomes come from the binary part, never through JSON numbers.
         std::optional<GenomeBlobReader> blob;
@@ -298,31 +347,7 @@ RunState load_checkpoint(const std::filesystem::path& path) {
                              std::to_string(dimension));
             blob.emplace(envelope.genomes, envelope.count, envelope.dimension);
         }
-        GenomeBlobReader* genomes = blob ? &*blob : nullptr;
-        // Before the search state, whose reader checks that every genome was taken.
-        if (content.contains("pending")) {
-            const json& pending = content.at("pending");
-            if (!pending.is_array() || pending.empty()) throw refuse("its pending births are not a non-empty array");
-            for (std::size_t i = 0; i < pending.size(); ++i)
-                state.pending.push_back(
-                    individual_from_json(pending[i], dimension, "pending[" + std::to_string(i) + "]", genomes));
-        }
-        const SearchKind& search = search_kind(config.algorithm);
-        if (!content.contains(search.key))
-            throw refuse(std::string("its config is a ") + algorithm_name(config.algorithm) + " run but it holds no " +
-                         search.key + " state");
-        state.search = search.load(content.at(search.key), config, dimension, genomes);
-        for (const json& row : content.at("history")) state.history.push_back(history_row_from_json(row));
-        if (state.history.size() != state.births() / P)
-            throw refuse(std::to_string(state.history.size()) + " history rows for " +
-                         std::to_string(state.births()) + " births");
-        for (const HistoryRow& row : state.history)
-            if (row.qd != search.qd_history) throw refuse("its history rows do not fit its algorithm");
-        for (std::size_t g = 0; g < state.history.size(); ++g)
-            if (state.history[g].generation != g) throw refuse("history rows out of order");
-        state.lineage_bytes = content.at("lineage").at("bytes").get<std::uint64_t>();
-        state.lineage_hash = content.at("lineage").at("hash").get<std::string>();
-        state.elapsed_s = content.at("elapsed_s").get<double>();
+        read_run_content(state, content, config, blob ? &*blob : nullptr, refuse);
         {
             GenomeBlobWriter rewritten;
             const json canonical = content_of(state, envelope.version >= 2 ? &rewritten : nullptr);

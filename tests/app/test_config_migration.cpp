@@ -4,6 +4,8 @@
 #include "core/base/errors.hpp"
 #include "run/config/config_migration.hpp"
 #include "run/config/experiment_config.hpp"
+#include "run/persistence/checkpoint.hpp"
+#include "tests/app/evolve_test_support.hpp"
 #include "tests/support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>
@@ -117,4 +119,55 @@ TEST_CASE("holds_all_of: every key of the part, with its value, at any depth", "
     CHECK_FALSE(holds_all_of(whole, json::parse(R"({"x": 1})")));
     CHECK_FALSE(holds_all_of(whole, json::parse(R"({"a": {"x": 1}})")));
     CHECK_FALSE(holds_all_of(json(1), json::object()));
+}
+
+TEST_CASE("format 2 as first written: a branching config's signal switches left out when off are read as off",
+          "[app][config][migration]") {
+    const json resolved =
+        read_experiment_config(json::parse(R"({"growth": {"mode": "branching"}})"), "c").resolved;
+    REQUIRE(resolved["growth"]["exposure"] == false);
+    REQUIRE(resolved["growth"]["signal_diffusion"] == 0);
+    json old = resolved;
+    old["growth"].erase("exposure");
+    old["growth"].erase("signal_diffusion");
+    CHECK(migrate_config(old) == resolved);
+    CHECK(migrate_config(resolved) == resolved);
+    // The paper's mode has no signals; a switch that is on is kept.
+    const json paper = read_experiment_config(json::object(), "c").resolved;
+    CHECK(migrate_config(paper) == paper);
+    json on = old;
+    on["growth"]["exposure"] = true;
+    CHECK(migrate_config(on)["growth"]["exposure"] == true);
+}
+
+TEST_CASE("a run directory written before the signal switches were resolved resumes, with the same results",
+          "[app][config][migration][checkpoint]") {
+    using namespace morphogen::test;
+    TempDir tmp("signal-switches");
+    json config = json::parse(tiny_config(1, 6, 3));
+    config["growth"]["mode"] = "branching";
+    config["network"]["outputs"] = 7;  // the branching mode's least
+    write_text(tmp.path / "c.json", config.dump());
+    const std::string evolve = "evolve " + q(tmp.path / "c.json") + " --no-report --out ";
+    REQUIRE(run_morphogen(evolve + q(tmp.path / "run")).code == 0);
+    REQUIRE(run_morphogen(evolve + q(tmp.path / "whole") + " --generations 2").code == 0);
+    // The run directory as the build before wrote it: both switches left out.
+    const fs::path config_file = tmp.path / "run" / "config.json", checkpoint = tmp.path / "run" / "checkpoint.json";
+    json stored = json::parse(read_text(config_file));
+    REQUIRE(stored["growth"]["exposure"] == false);
+    stored["growth"].erase("exposure");
+    stored["growth"].erase("signal_diffusion");
+    write_text(config_file, stored.dump(2) + "\n");
+    CheckpointParts parts = checkpoint_parts(read_text(checkpoint), "run");
+    parts.content["config"]["growth"].erase("exposure");
+    parts.content["config"]["growth"].erase("signal_diffusion");
+    write_text(checkpoint, checkpoint_bytes(parts));
+
+    const CliResult resumed = run_morphogen("resume " + q(tmp.path / "run") + " --no-report --generations 2");
+    INFO(resumed.output);
+    REQUIRE(resumed.code == 0);
+    const json written = json::parse(read_text(config_file));
+    CHECK(written["growth"]["exposure"] == false);
+    CHECK(written["growth"]["signal_diffusion"] == 0);
+    check_same_results(tmp.path / "run", tmp.path / "whole");
 }

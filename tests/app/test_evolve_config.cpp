@@ -245,6 +245,10 @@ TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]
                                          key == "shoot_half_light" || key == "volume_cost" || key == "leaf_size"))
                 document[section]["type"] = "plant";
             if (section == "growth" && key == "turn_rate") document[section]["mode"] = "branching";
+            if (section == "growth" && key == "signal_diffusion") {  // resolved (off) in the branching mode
+                document[section]["mode"] = "branching";
+                document["network"]["outputs"] = 8;  // the signal's channel
+            }
             if (section == "growth" && key == "contact_distance") document[section]["collisions"] = "touch";
             return document;
         };

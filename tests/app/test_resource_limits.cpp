@@ -33,7 +33,8 @@ Workload evolution_on(int threads) {
     return w;
 }
 
-// The four configs of issue 14 that ran for minutes or out of memory.
+// Four configs that, before the limits, ran for minutes or out of memory
+// (docs/limits-resources.md, "Resource limits").
 const std::vector<std::pair<std::string, std::string>> hostile = {
     {R"({"network": {"outputs": 1000, "hidden": [10000]}})", "network.hidden"},
     {R"({"evolution": {"population": 1000000}})", "evolution.population"},

@@ -62,7 +62,7 @@ struct LodStats {
 };
 constexpr std::size_t kLarge = 1000;
 
-// Checks every written level against the issue's bounds: closed and
+// Checks every written level against the LOD bounds: closed and
 // manifold, within 10 % of half the triangles of the level before, within
 // lod_distance_bound(i) of LOD0 by an independent measurement; that what
 // simplify_lods reports matches; and that a short chain is one that stopped.
@@ -160,7 +160,7 @@ TEST_CASE("levels of detail of two trees stay within 1 % and 2 % of LOD0", "[eng
 }
 
 // 100 genomes (slow: ctest -L slow, or test_engine "[lods-slow]"): every
-// level written keeps the issue's bounds (check_chain); the chains that
+// level written keeps the LOD bounds (check_chain); the chains that
 // stopped short are counted (experiments/2026-11-27-lod-bounds.md).
 TEST_CASE("levels of detail of 100 random genomes keep the bounds on every level written", "[.][lods-slow]") {
     LodStats stats;

@@ -44,7 +44,7 @@ TEST_CASE("no fitness section means canopy at height 10, cell 0.1", "[fitness][c
     const FitnessOutcome outcome = r.fitness->evaluate(box.view());
     CHECK(outcome.valid);
     CHECK(outcome.score == 1.0);
-    CHECK(canopy_params_of(r.resolved).height == 10.0);
+    CHECK(r.fitness->canopy_params().height == 10.0);
 }
 
 TEST_CASE("a sum of weighted terms", "[fitness][config]") {
@@ -61,7 +61,7 @@ TEST_CASE("a sum of weighted terms", "[fitness][config]") {
     CHECK(r.resolved["terms"][2]["weight"] == 1.0);
     const MeshArrays box = make_box({0, 0, 0}, {1, 1, 11});
     CHECK(r.fitness->evaluate(box.view()).score == Approx(1.0 - 0.008 + 11.0));
-    CHECK(canopy_params_of(r.resolved).height == 10.5);
+    CHECK(r.fitness->canopy_params().height == 10.5);
     // The resolved section reads back to itself.
     const Read again = read(r.resolved);
     CHECK(again.issues.empty());

@@ -22,6 +22,7 @@ class Constant final : public FitnessFunction {
 public:
     explicit Constant(double value) : value_(value) {}
     std::string type() const override { return "constant"; }
+    void add_cost(FitnessCost&, const CostScope&) const override {}  // costs nothing to speak of
     double evaluate(MeshView) const override { return value_; }
 
 private:
@@ -31,12 +32,14 @@ private:
 class Throwing final : public FitnessFunction {
 public:
     std::string type() const override { return "throwing"; }
+    void add_cost(FitnessCost&, const CostScope&) const override {}  // costs nothing to speak of
     double evaluate(MeshView) const override { throw std::runtime_error("boom"); }
 };
 
 class ThrowingInt final : public FitnessFunction {
 public:
     std::string type() const override { return "int"; }
+    void add_cost(FitnessCost&, const CostScope&) const override {}  // costs nothing to speak of
     double evaluate(MeshView) const override { throw 42; }
 };
 
@@ -45,6 +48,7 @@ class Overlap final : public FitnessFunction {
 public:
     explicit Overlap(bool safe) : safe_(safe) {}
     std::string type() const override { return "overlap"; }
+    void add_cost(FitnessCost&, const CostScope&) const override {}  // costs nothing to speak of
     bool thread_safe() const override { return safe_; }
     double evaluate(MeshView) const override {
         const int now = ++inside_;

@@ -1,4 +1,4 @@
-// The `plant` fitness (fitness/plant_fitness.hpp, docs/fitness.md "plant"):
+// The `plant` fitness (fitness/plant_fitness.hpp, docs/fitness-plant.md "plant"):
 // its light term on meshes whose irradiance is known, its moment, and its
 // config keys. The tips come from fitness/architecture.hpp, tested there.
 #include "fitness/fitness.hpp"

@@ -1,4 +1,4 @@
-// The `tree` fitness (fitness/tree_fitness.hpp, docs/fitness.md "tree") on
+// The `tree` fitness (fitness/tree_fitness.hpp, docs/fitness-tree.md "tree") on
 // meshes whose light, sections and volume are known, and its config keys.
 #include "fitness/fitness.hpp"
 #include "fitness/tree_fitness.hpp"

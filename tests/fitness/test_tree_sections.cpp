@@ -1,4 +1,4 @@
-// The tree measures (fitness/tree_sections.hpp, docs/fitness.md "Tree
+// The tree measures (fitness/tree_sections.hpp, docs/fitness-measures.md "Tree
 // measures") on meshes with known answers, and as fitness terms and
 // descriptors.
 #include "fitness/descriptors.hpp"

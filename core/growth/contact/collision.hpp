@@ -6,7 +6,7 @@
 // and deterministic: what it decides depends only on the mesh, never on the
 // order it visits pairs in.
 //
-// Cheap (docs/performance.md, "Collision-aware growth"): the broad phase
+// Cheap (docs/performance-collisions.md, "Collision-aware growth"): the broad phase
 // (core/mesh/face_listing.hpp) lives from step to step and is only updated where
 // a face left its listing box or changed, and holds only pairs sharing no
 // vertex; pairs of faces around a vertex are proven apart a fan at a time

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Same results across two builds of morphogen (issue 35's refactor): for each
+# Same results across two builds of morphogen (a refactor's check): for each
 # shipped config, a fresh run of OLD and of NEW, and NEW resuming OLD's run
 # stopped halfway, must be equal up to clocks and config format
 # (compare_runs.py). Usage: same_results.sh OLD_EXE NEW_EXE WORK_DIR

@@ -6,7 +6,7 @@ usage: is_tree.py CONFIG MESH...   (prints CSV: one row per mesh)
 A tree here (issue 36's reading of "what a person calls a tree"): a clean
 solid (no self-intersection) whose trunk forks below the crown (the first
 fork lower than 3/4 of the height) into at least 3 limbs, each at least 3x
-as long as it is thick (the skeleton's `limbs`, docs/fitness.md
+as long as it is thick (the skeleton's `limbs`, docs/fitness-measures.md
 "Architecture measures"), each reaching the crown (its tip in the upper half
 of the plant). The numbers come from `morphogen score --json`.
 """

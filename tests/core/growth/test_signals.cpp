@@ -246,13 +246,15 @@ TEST_CASE("the signals' keys: branching mode only, in range, recorded only when 
     CHECK(has_issue(read_growth(branching({{"signal_diffusion", 2}, {"signal_rate", 0}})), "growth.signal_rate", "0"));
     CHECK(has_issue(read_growth(branching({{"signal_diffusion", 2}, {"signal_rate", 1.5}})), "growth.signal_rate", "1.5"));
     CHECK(has_issue(read_growth(branching({{"exposure", "yes"}})), "growth.exposure", "yes"));
-    // Off: not recorded (a branching config resolves as before the keys existed).
+    // Off: the switches recorded as off (every key resolved), their own keys not.
     json resolved, plain;
     CHECK(read_growth(branching(json::object()), &plain).empty());
     CHECK(read_growth(branching({{"exposure", false}, {"signal_diffusion", 0}}), &resolved).empty());
     CHECK(resolved == plain);
-    CHECK_FALSE(plain.contains("exposure"));
-    CHECK_FALSE(plain.contains("signal_diffusion"));
+    CHECK(plain["exposure"] == false);
+    CHECK(plain["signal_diffusion"] == 0);
+    for (const char* key : {"exposure_cell", "exposure_depth", "exposure_full_shade", "signal_rate"})
+        CHECK_FALSE(plain.contains(key));
     // On: recorded with every default of their own keys.
     CHECK(read_growth(branching({{"exposure", true}, {"signal_diffusion", 3}}), &resolved).empty());
     CHECK(resolved["exposure"] == true);
