@@ -6,13 +6,12 @@
 #include "app/commands.hpp"
 #include "core/base/fma_peak.hpp"
 #include "core/growth/growth_phase_timer.hpp"
-#include "evolution/execution/worker_threads.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/growth/genome_grower.hpp"
 #include "run/config/experiment_config.hpp"
 #include "run/genome_source.hpp"
 
 #include <nlohmann/json.hpp>
-#include <omp.h>
 
 #include <algorithm>
 #include <chrono>
@@ -71,13 +70,10 @@ BenchPass run_pass(const std::vector<Network>& networks, const GenomeGrower& gro
 
     // All threads, one genome per thread at a time (as evolution runs).
     start = std::chrono::steady_clock::now();
-    const int count = static_cast<int>(networks.size());
-#pragma omp parallel num_threads(threads)
-    {
-        GrowthWorkspace local;
-#pragma omp for schedule(dynamic)
-        for (int i = 0; i < count; ++i) grower.grow(networks[i], local);
-    }
+    std::vector<GrowthWorkspace> workspaces(static_cast<std::size_t>(threads));
+    parallel_for(networks.size(), threads, [&](std::size_t i, int worker) {
+        grower.grow(networks[i], workspaces[static_cast<std::size_t>(worker)]);
+    });
     pass.wall_all = seconds_since(start);
     return pass;
 }

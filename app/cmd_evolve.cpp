@@ -9,7 +9,7 @@
 #include "run/loop/run_records.hpp"
 #include "run/searches/run_search.hpp"
 #include "run/loop/stop_signals.hpp"
-#include "evolution/execution/worker_threads.hpp"
+#include "core/base/parallel_for.hpp"
 
 #include <chrono>
 #include <iostream>

@@ -3,14 +3,13 @@
 #include "fitness/mesh_stats.hpp"
 #include "app/resource_options.hpp"
 #include "core/base/errors.hpp"
-#include "evolution/execution/worker_threads.hpp"
+#include "core/base/parallel_for.hpp"
 #include "core/growth/genome_grower.hpp"
 #include "core/io/mesh_io.hpp"
 #include "report/render.hpp"
 #include "run/config/experiment_config.hpp"
 #include "run/genome_source.hpp"
 
-#include <omp.h>
 
 #include <chrono>
 #include <cstdio>
@@ -64,28 +63,26 @@ int run_gallery(const GalleryOptions& options) {
     if (ec) throw IoError(options.out + ": cannot create directory: " + ec.message());
 
     std::vector<GalleryEntry> entries(options.count);
-#pragma omp parallel num_threads(threads)
-    {
-        GrowthWorkspace workspace;
-#pragma omp for schedule(dynamic)
-        for (int i = 0; i < options.count; ++i) {
-            GalleryEntry& entry = entries[i];
-            entry.seed = options.seed + static_cast<std::uint64_t>(i);
-            try {
-                const auto start = std::chrono::steady_clock::now();
-                const Genome genome = random_genome(grower.layers(), config.growth.mode, config.evolution.init_range, entry.seed);
-                GrowthState state = grower.grow(genome.params, workspace);
-                entry.time_ms =
-                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-                entry.fitness = config.fitness->evaluate(state.mesh.view());
-                entry.mesh = {state.mesh.positions(), state.mesh.faces()};
-                if (options.format != "none")
-                    write_mesh(entry.mesh.view(), (dir / entry_name(i, options.format)).string(), options.mesh_options);
-            } catch (const std::exception& e) {
-                entry.error = e.what();
-            }
+    std::vector<GrowthWorkspace> workspaces(static_cast<std::size_t>(threads));
+    parallel_for(entries.size(), threads, [&](std::size_t i, int worker) {
+        GrowthWorkspace& workspace = workspaces[static_cast<std::size_t>(worker)];
+        GalleryEntry& entry = entries[i];
+        entry.seed = options.seed + static_cast<std::uint64_t>(i);
+        try {
+            const auto start = std::chrono::steady_clock::now();
+            const Genome genome = random_genome(grower.layers(), config.growth.mode, config.evolution.init_range, entry.seed);
+            GrowthState state = grower.grow(genome.params, workspace);
+            entry.time_ms =
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+            entry.fitness = config.fitness->evaluate(state.mesh.view());
+            entry.mesh = {state.mesh.positions(), state.mesh.faces()};
+            if (options.format != "none")
+                write_mesh(entry.mesh.view(), (dir / entry_name(static_cast<int>(i), options.format)).string(),
+                           options.mesh_options);
+        } catch (const std::exception& e) {
+            entry.error = e.what();
         }
-    }
+    });
 
     const std::string summary_path = (dir / "summary.csv").string();
     std::ofstream summary(summary_path, std::ios::trunc);

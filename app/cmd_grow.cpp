@@ -69,8 +69,7 @@ int run_grow(const GrowOptions& options) {
     check_resource_limits(config, Workload{.scores = false, .writers = 1}, options.resources.limits(),
                           config_source(options.config));
     // Refuse an unknown extension, or colours it cannot hold, before growing.
-    if (const MeshFormat format = mesh_format_from_path(options.output);
-        options.plant.colour && (format == MeshFormat::off || format == MeshFormat::stl))
+    if (options.plant.colour && !mesh_format_from_path(options.output).colours)
         throw ConfigError("--colour: " + options.output + " cannot hold vertex colours; write .glb, .ply or .obj");
     const bool animating = !options.animate.empty() || !options.frames_obj.empty();
     const int frames = options.frames.value_or(default_animation_frames(config.growth.steps));
@@ -97,8 +96,8 @@ int run_grow(const GrowOptions& options) {
     const std::vector<float> colours =
         options.plant.colour ? growth_colours(state, births.steps(), config.growth) : std::vector<float>{};
     const std::vector<double> light = options.plant.leaves ? leaf_light(state, config.growth) : std::vector<double>{};
-    const MeshFormat format = mesh_format_from_path(options.output);
-    if (options.plant.engine_ready() || (options.plant.colour && format == MeshFormat::glb)) {
+    const MeshFormat& format = mesh_format_from_path(options.output);
+    if (options.plant.engine_ready() || (options.plant.colour && format.extension == ".glb")) {
         write_plant_glb(options.output,
                         GrownPlant{.mesh = state.mesh.view(), .birth_steps = births.steps(), .steps = state.steps_done,
                                    .colours = colours, .light = light},
@@ -136,7 +135,7 @@ void add_grow_command(CLI::App& root, CommandRunner& selected) {
     auto* genome = cmd->add_option("--genome", options->genome, "Grow this genome file")->check(CLI::ExistingFile);
     random->excludes(genome);
     cmd->add_option("--steps", options->steps, "Override growth.steps")->check(CLI::Range(0, 1'000'000));
-    cmd->add_option("-o,--output", options->output, "Output mesh (.obj .ply .off .stl .glb)")->required();
+    cmd->add_option("-o,--output", options->output, "Output mesh (" + mesh_extensions() + ")")->required();
     auto* animate = cmd->add_option("--animate", options->animate,
                                     "Also write the growth as an animated glTF (.glb), one node per frame")
                         ->check([](const std::string& path) {

@@ -1,15 +1,14 @@
 #include "breed/plant_growth.hpp"
 
+#include "core/base/parallel_for.hpp"
 #include "fitness/measures.hpp"
 #include "fitness/mesh_stats.hpp"
 #include "core/growth/network/network.hpp"
 #include "core/io/mesh_io.hpp"
 
 #include <algorithm>
-#include <atomic>
 #include <exception>
 #include <stdexcept>
-#include <thread>
 
 namespace morphogen {
 
@@ -39,7 +38,7 @@ PlantOutcome PlantGrowth::grow(std::span<const double> params) const {
     } catch (const std::invalid_argument&) {
         out.descriptors.clear();  // a degenerate plant: the search cannot place it
     }
-    out.glb = encode_mesh(mesh, MeshFormat::glb, {}, "plant.glb");
+    out.glb = encode_mesh(mesh, mesh_format(".glb"), {}, "plant.glb");
     RenderOptions thumb;
     thumb.size = kThumbPixels;
     out.thumb = render_mesh(mesh, thumb);
@@ -64,24 +63,7 @@ Evaluation PlantGrowth::evaluate(std::span<const double> params) const {
 
 std::vector<PlantOutcome> PlantGrowth::grow_all(const std::vector<std::vector<double>>& genomes, int threads) const {
     std::vector<PlantOutcome> out(genomes.size());
-    std::vector<std::exception_ptr> errors(genomes.size());
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-        for (std::size_t i = next++; i < genomes.size(); i = next++) {
-            try {
-                out[i] = grow(genomes[i]);
-            } catch (...) {
-                errors[i] = std::current_exception();
-            }
-        }
-    };
-    const auto n = static_cast<std::size_t>(std::clamp(threads, 1, 64));
-    std::vector<std::thread> pool;
-    for (std::size_t t = 1; t < std::min(n, genomes.size()); ++t) pool.emplace_back(work);
-    work();
-    for (std::thread& t : pool) t.join();
-    for (const std::exception_ptr& e : errors)
-        if (e) std::rethrow_exception(e);
+    parallel_for(genomes.size(), threads, [&](std::size_t i, int) { out[i] = grow(genomes[i]); });
     return out;
 }
 

@@ -5,6 +5,7 @@
 #include "core/base/atomic_file.hpp"
 #include "core/base/errors.hpp"
 #include "core/base/json_text.hpp"
+#include "core/base/parallel_for.hpp"
 #include "breed/breed_errors.hpp"
 #include "engine/plant_record.hpp"
 #include "evolution/operators.hpp"
@@ -111,8 +112,7 @@ BreedSession::~BreedSession() {
 }
 
 int BreedSession::threads() const {
-    if (options_.threads > 0) return options_.threads;
-    return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+    return resolve_threads(options_.threads);
 }
 
 std::string BreedSession::name() const {

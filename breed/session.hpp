@@ -56,7 +56,7 @@ struct BreedStep {
 };
 
 struct BreedSessionOptions {
-    int threads = 0;  // threads that grow a grid's plants; 0: hardware concurrency
+    int threads = 0;  // threads that grow a grid's plants; 0: all cores (resolve_threads)
 };
 
 class BreedSession {

@@ -4,7 +4,7 @@
 #include "evolution/execution/thread_evaluator.hpp"
 #include "run/config/experiment_config.hpp"
 #include "run/growth_problem.hpp"
-#include "evolution/execution/worker_threads.hpp"
+#include "core/base/parallel_for.hpp"
 
 #include <nlohmann/json.hpp>
 

@@ -2,8 +2,9 @@
 // seed file are read: core/io/mesh_io.hpp read_mesh, then TriMesh::from_arrays
 // (the topology checks) and the seed's growth directions.
 //
-// The first byte picks the format, the rest is the file: 'o' OBJ, 'p' PLY,
-// 'f' OFF, 's' STL (any other byte: its value mod 4 in that order). Corpus
+// The first byte picks the format, the rest is the file: the fuzz_tag of a
+// row of core/io/mesh_formats.cpp ('o' OBJ, 'p' PLY, 'f' OFF, 's' STL; any
+// other byte: its value mod the readers' count, in the table's order). Corpus
 // files in tests/corpus/mesh/ are plain mesh files; the replay and
 // scripts/fuzz.sh prefix the byte their extension names (input_from_file).
 #include "fuzz/fuzz_target.hpp"
@@ -11,38 +12,36 @@
 #include "core/growth/seeds/seeds.hpp"
 #include "core/mesh/mesh.hpp"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <vector>
 
 namespace morphogen::fuzz {
 namespace {
 
-MeshFormat format_of(std::uint8_t tag) {
-    switch (tag) {
-        case 'o': return MeshFormat::obj;
-        case 'p': return MeshFormat::ply;
-        case 'f': return MeshFormat::off;
-        case 's': return MeshFormat::stl;
-        default: break;
-    }
-    constexpr MeshFormat order[] = {MeshFormat::obj, MeshFormat::ply, MeshFormat::off, MeshFormat::stl};
-    return order[tag % 4];
+// The formats with a reader, in the table's order.
+std::vector<const MeshFormat*> readers() {
+    std::vector<const MeshFormat*> out;
+    for (const MeshFormat& format : mesh_formats())
+        if (format.read != nullptr && format.fuzz_tag != 0) out.push_back(&format);
+    return out;
+}
+
+const MeshFormat& format_of(std::uint8_t tag) {
+    static const std::vector<const MeshFormat*> formats = readers();
+    for (const MeshFormat* format : formats)
+        if (static_cast<std::uint8_t>(format->fuzz_tag) == tag) return *format;
+    return *formats[tag % formats.size()];
 }
 
 }  // namespace
 
 std::string input_from_file(const std::string& filename, std::string bytes) {
-    std::string ext = std::filesystem::path(filename).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    char tag = 0;
-    if (ext == ".obj") tag = 'o';
-    else if (ext == ".ply") tag = 'p';
-    else if (ext == ".off") tag = 'f';
-    else if (ext == ".stl") tag = 's';
-    else finding("harness: mesh corpus file " + filename + " has no .obj/.ply/.off/.stl extension");
-    return tag + bytes;
+    const MeshFormat* format = find_mesh_format(std::filesystem::path(filename).extension().string());
+    if (format == nullptr || format->read == nullptr || format->fuzz_tag == 0)
+        finding("harness: mesh corpus file " + filename + " has no extension of a mesh reader (" +
+                mesh_extensions(true) + ")");
+    return format->fuzz_tag + bytes;
 }
 
 }  // namespace morphogen::fuzz
@@ -51,7 +50,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     using namespace morphogen;
     using namespace morphogen::fuzz;
     if (size == 0) return 0;
-    const MeshFormat format = format_of(data[0]);
+    const MeshFormat& format = format_of(data[0]);
     MeshArrays arrays;
     if (!accepts([&] { arrays = read_mesh_bytes(as_text(data + 1, size - 1), format); })) return 0;
     // What a reader hands on must be usable: finite coordinates, indices that

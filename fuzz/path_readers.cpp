@@ -50,7 +50,7 @@ private:
 
 }  // namespace
 
-MeshArrays read_mesh_bytes(std::string_view bytes, MeshFormat format) {
+MeshArrays read_mesh_bytes(std::string_view bytes, const MeshFormat& format) {
     return parse_mesh(bytes, format, "fuzz input");
 }
 

@@ -12,7 +12,7 @@
 namespace morphogen::fuzz {
 
 // parse_mesh() of `bytes` as `format`.
-MeshArrays read_mesh_bytes(std::string_view bytes, MeshFormat format);
+MeshArrays read_mesh_bytes(std::string_view bytes, const MeshFormat& format);
 // load_checkpoint() of a file holding `bytes`.
 RunState load_checkpoint_bytes(std::string_view bytes);
 

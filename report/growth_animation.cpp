@@ -171,7 +171,7 @@ void write_growth_frames_obj(const std::filesystem::path& dir, const GrowthFrame
     for (std::size_t i = 0; i < frames.meshes.size(); ++i) {
         char name[32];
         std::snprintf(name, sizeof name, "frame_%04zu.obj", i);
-        write_mesh(frames.meshes[i].view(), (dir / name).string(), MeshFormat::obj);
+        write_mesh(frames.meshes[i].view(), (dir / name).string(), mesh_format(".obj"));
     }
 }
 

@@ -2,6 +2,7 @@
 #include "report/render.hpp"
 
 #include "core/base/errors.hpp"
+#include "core/base/parallel_for.hpp"
 
 #include <Eigen/Geometry>
 
@@ -356,23 +357,17 @@ Image render_sheet(std::span<const MeshArrays> meshes, std::span<const std::stri
     const int cell_h = sheet_cell_height(size);
     Image sheet(columns * size, std::max(1, rows) * cell_h);
 
-    std::exception_ptr error;
-#pragma omp parallel for schedule(dynamic, 1)
-    for (int i = 0; i < n; ++i) {
-        try {
-            const Frame frame = options.shared_scale ? shared : fit(std::span(&placements[i], 1), size, cam);
-            const Image cell = render_framed(meshes[i].view(), placements[i].centre, frame, cam, options);
-            const int x0 = (i % columns) * size, y0 = (i / columns) * cell_h;
-            blit(sheet, cell, x0, y0);  // cells are disjoint: no race
-            const int scale = caption_scale(size);
-            const std::string text = fit_text(captions.empty() ? index_caption(i) : captions[i], size - 8, scale);
-            draw_text(sheet, x0 + (size - text_width(text, scale)) / 2, y0 + size + 3, text, scale, kCaptionGrey);
-        } catch (...) {
-#pragma omp critical(morphogen_render_error)
-            if (!error) error = std::current_exception();
-        }
-    }
-    if (error) std::rethrow_exception(error);
+    // Cells are disjoint: no race.
+    parallel_for(meshes.size(), resolve_threads(0), [&](std::size_t index, int) {
+        const int i = static_cast<int>(index);
+        const Frame frame = options.shared_scale ? shared : fit(std::span(&placements[i], 1), size, cam);
+        const Image cell = render_framed(meshes[i].view(), placements[i].centre, frame, cam, options);
+        const int x0 = (i % columns) * size, y0 = (i / columns) * cell_h;
+        blit(sheet, cell, x0, y0);
+        const int scale = caption_scale(size);
+        const std::string text = fit_text(captions.empty() ? index_caption(i) : captions[i], size - 8, scale);
+        draw_text(sheet, x0 + (size - text_width(text, scale)) / 2, y0 + size + 3, text, scale, kCaptionGrey);
+    });
 
     // Thin grid lines between cells.
     for (int c = 1; c < columns; ++c)

@@ -29,7 +29,7 @@ ReportPlant grow_report_plant(const ExperimentConfig& config, const GenomeGrower
         plant.glb = plant_glb_bytes(ready, "plant " + std::to_string(individual.id));
         plant.lods = static_cast<int>(ready.levels.size());  // fewer than asked where the chain stopped (plant_lods.hpp)
     } catch (const MeshError& e) {
-        plant.glb = encode_mesh(mesh, MeshFormat::glb);
+        plant.glb = encode_mesh(mesh, mesh_format(".glb"));
         plant.why_plain = e.what();
     }
     return plant;

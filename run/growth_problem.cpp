@@ -45,14 +45,14 @@ Evaluation GrowthProblem::evaluate_keeping(std::span<const double> params, int w
 }
 
 namespace {
-constexpr std::pair<const char*, MeshFormat> export_formats[] = {{".glb", MeshFormat::glb}, {".obj", MeshFormat::obj}};
+constexpr const char* export_formats[] = {".glb", ".obj"};
 
 // The export files of a mesh in one string: each file's byte count (8 bytes,
 // native order) then its bytes, in export_formats order.
 std::string pack_exports(MeshView mesh) {
     std::string out;
-    for (const auto& [extension, format] : export_formats) {
-        const std::string bytes = encode_mesh(mesh, format, {}, std::string("kept mesh") + extension);
+    for (const char* extension : export_formats) {
+        const std::string bytes = encode_mesh(mesh, mesh_format(extension), {}, std::string("kept mesh") + extension);
         const std::uint64_t n = bytes.size();
         out.append(reinterpret_cast<const char*>(&n), sizeof n);
         out += bytes;
@@ -110,7 +110,7 @@ void GrowthProblem::export_kept(const std::string& kept, std::span<const double>
                                 const std::filesystem::path& stem) const {
     const std::vector<std::string_view> files = unpack_exports(kept);
     for (std::size_t i = 0; i < files.size(); ++i)
-        write_file_atomically(stem.string() + export_formats[i].first, files[i]);
+        write_file_atomically(stem.string() + export_formats[i], files[i]);
     save_genome(Genome{grower_.layers(), std::vector<double>(params.begin(), params.end())},
                 stem.string() + ".genome.json");
 }

@@ -139,11 +139,42 @@ void Grower::settle_contacts(GrowthState& state, GrowthWorkspace& workspace) con
     for (const int v : workspace.touching) stopped[v] = value;
 }
 
+namespace {
+
+// §5.3: the direction of a vertex made inside face (a, b, c): the face's unit
+// normal plus the corners' directions weighted by their w[2], normalised.
+Vec3 split_direction(const void* context, int a, int b, int c) {
+    const GrowthState& state = *static_cast<const GrowthState*>(context);
+    const std::vector<Vec3>& x = state.mesh.positions();
+    const Vec3 cross = (x[b] - x[a]).cross(x[c] - x[a]);  // = face_cross of the face (a, b, c)
+    const Vec3 normal = cross / std::sqrt(cross.squaredNorm());
+    const std::vector<Vec3>& h = state.directions;
+    const Vec3 sum = normal + state.output(a, 2) * h[a] + state.output(b, 2) * h[b] + state.output(c, 2) * h[c];
+    const double length = sum.norm();
+    return length < 1e-12 ? normal : Vec3(sum / length);
+}
+
+}  // namespace
+
+VertexChannels GrowthState::channels() {
+    VertexChannels list;
+    // w_v: the mean of the corners' outputs of this step.
+    list.mean(outputs, outputs_per_vertex);
+    list.computed(directions, &split_direction, this);
+    // Branching mode (§5.8): a new vertex grows only between three that grow.
+    list.all(active);
+    // Likewise in the paper's mode with "touch" (§5.7.1): it grows only if
+    // no corner touched.
+    list.any(touched);
+    return list;
+}
+
 void Grower::split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuard* guard, ContactGuard* contact) const {
     TriMesh& mesh = state.mesh;
     const int N = state.outputs_per_vertex;
     const int F0 = mesh.num_faces();
-    std::vector<double>& outputs = state.outputs;
+    const std::vector<double>& outputs = state.outputs;
+    const VertexChannels channels = state.channels();
     // Each vertex's w[1] in a compact array: the face loop reads it three times
     // per face from scattered vertices, and a whole output row per read would
     // pull N doubles into the cache for one. Only vertices older than this
@@ -166,30 +197,10 @@ void Grower::split(GrowthState& state, GrowthWorkspace& workspace, CollisionGuar
         const double twice_area = std::sqrt(twice_area_squared);  // = cross.norm()
         if (!(0.5 * twice_area > params_.split_area * (0.5 + w1_sum / 3.0))) continue;
 
-        const double* wa = outputs.data() + static_cast<std::ptrdiff_t>(N) * a;
-        const double* wb = outputs.data() + static_cast<std::ptrdiff_t>(N) * b;
-        const double* wc = outputs.data() + static_cast<std::ptrdiff_t>(N) * c;
-        const Vec3 normal = cross / twice_area;
-        const std::vector<Vec3>& h = state.directions;
-        const Vec3 sum = normal + wa[2] * h[a] + wb[2] * h[b] + wc[2] * h[c];
-        const double length = sum.norm();
-        const Vec3 direction = length < 1e-12 ? normal : Vec3(sum / length);
         // a, b, c are older vertices (faces appended in this phase are not
-        // visited), so w_v averages this step's outputs. Grow first: the
-        // pointers above may not survive the reallocation.
-        const std::size_t end = outputs.size();
-        outputs.resize(end + N);
-        for (int k = 0; k < N; ++k)
-            outputs[end + k] = (outputs[static_cast<std::size_t>(N) * a + k] + outputs[static_cast<std::size_t>(N) * b + k] +
-                                outputs[static_cast<std::size_t>(N) * c + k]) /
-                               3.0;
+        // visited), so the new vertex's values come from this step's.
+        channels.add_vertex_in(a, b, c);
         mesh.split_face(f, mesh.face_centroid(f));
-        state.directions.push_back(direction);
-        // Branching mode (§5.8): a new vertex grows only between three that grow.
-        if (!state.active.empty()) state.active.push_back(state.active[a] & state.active[b] & state.active[c]);
-        // Likewise in the paper's mode with "touch" (§5.7.1): it grows only
-        // if no corner touched.
-        if (!state.touched.empty()) state.touched.push_back(state.touched[a] | state.touched[b] | state.touched[c]);
         if (guard != nullptr)
             for (const int written : {f, mesh.num_faces() - 2, mesh.num_faces() - 1}) guard->face_changed(mesh, written);
         if (contact != nullptr)

@@ -11,6 +11,7 @@
 #include "core/growth/growth_params.hpp"
 #include "core/growth/network/network.hpp"
 #include "core/growth/seeds/seeds.hpp"
+#include "core/growth/vertex_channels.hpp"
 #include "core/mesh/mesh.hpp"
 
 #include <Eigen/Core>
@@ -37,6 +38,11 @@ struct GrowthState {
     double output(int vertex, int channel) const {
         return outputs[static_cast<std::size_t>(vertex) * outputs_per_vertex + channel];
     }
+
+    // The per-vertex members above (the mesh's own aside), each with the
+    // rule that gives a vertex made by a split its values (§5.3, §5.7.1,
+    // §5.8): what the split phase grows. Valid while this state lives.
+    VertexChannels channels();
 };
 
 // Reusable per-thread buffers, so growing many genomes does not reallocate.

@@ -1,14 +1,12 @@
 #pragma once
-// The mesh file formats, what a mesh file may hold and how it is written:
-// shared by the public reader/writer (mesh_io.hpp) and the per-format files
-// (mesh_io_detail.hpp).
+// What a mesh file may hold and how it is written: shared by the public
+// reader/writer (mesh_io.hpp), the table of formats (mesh_formats.hpp) and the
+// per-format files (mesh_io_detail.hpp).
 #include <cstddef>
 
 #include <span>
 
 namespace morphogen {
-
-enum class MeshFormat { obj, ply, off, stl, glb };
 
 // What a mesh file may hold. The file size bounds the memory a read takes
 // (the file, plus at most the vertex and triangle arrays below); the

@@ -1,5 +1,6 @@
 // Mesh file writers and readers (see mesh_io.hpp): choosing the format, file
-// access and dispatch. Each format lives in its own mesh_io_<format>.cpp.
+// access and dispatch through the table of mesh_formats.cpp. Each format lives
+// in its own mesh_io_<format>.cpp.
 // Writers build the whole file in memory and write it with one call, so a
 // failed write is detected in one place and the partial file is removed.
 // Readers load the whole file and parse it from memory; every error names the
@@ -16,8 +17,10 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string_view>
 #include <system_error>
+#include <vector>
 
 namespace morphogen {
 
@@ -58,55 +61,59 @@ void check_indices(MeshView mesh, const std::string& path) {
                                std::to_string(v) + " out of range [0, " + std::to_string(nv) + ")");
 }
 
+// "a, b or c": the table's extensions (or names of the formats with a reader).
+std::string listed(bool readers) {
+    std::vector<std::string_view> items;
+    for (const MeshFormat& format : mesh_formats())
+        if (!readers || format.read != nullptr) items.push_back(readers ? format.name : format.extension);
+    std::string out;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) out += i + 1 == items.size() ? " or " : ", ";
+        out += items[i];
+    }
+    return out;
+}
+
 }  // namespace
 
-MeshFormat mesh_format_from_path(const std::string& path) {
+const MeshFormat& mesh_format_from_path(const std::string& path) {
     const std::string ext = lower(std::filesystem::path(path).extension().string());
-    if (ext == ".obj") return MeshFormat::obj;
-    if (ext == ".ply") return MeshFormat::ply;
-    if (ext == ".off") return MeshFormat::off;
-    if (ext == ".stl") return MeshFormat::stl;
-    if (ext == ".glb") return MeshFormat::glb;
-    fail(path, "unknown mesh file extension " + excerpt(ext.empty() ? std::string("(none)") : ext) +
-                   " (expected .obj, .ply, .off, .stl or .glb)");
+    if (const MeshFormat* format = find_mesh_format(ext)) return *format;
+    fail(path, "unknown mesh file extension " + excerpt(ext.empty() ? std::string("(none)") : ext) + " (expected " +
+                   listed(false) + ")");
+}
+
+const MeshFormat& mesh_format(std::string_view extension) {
+    if (const MeshFormat* format = find_mesh_format(extension)) return *format;
+    throw std::invalid_argument("no mesh format has the extension " + std::string(extension));
 }
 
 void write_mesh(MeshView mesh, const std::string& path, const MeshWriteOptions& options) {
     write_mesh(mesh, path, mesh_format_from_path(path), options);
 }
 
-void write_mesh(MeshView mesh, const std::string& path, MeshFormat format, const MeshWriteOptions& options) {
+void write_mesh(MeshView mesh, const std::string& path, const MeshFormat& format, const MeshWriteOptions& options) {
     write_file(path, encode_mesh(mesh, format, options, path));
 }
 
-std::string encode_mesh(MeshView mesh, MeshFormat format, const MeshWriteOptions& options, const std::string& source) {
+std::string encode_mesh(MeshView mesh, const MeshFormat& format, const MeshWriteOptions& options,
+                        const std::string& source) {
     check_indices(mesh, source);
-    switch (format) {
-        case MeshFormat::obj: return obj_bytes(mesh, options.colours);
-        case MeshFormat::ply: return ply_bytes(mesh, options);
-        case MeshFormat::off: return off_bytes(mesh);
-        case MeshFormat::stl: return stl_bytes(mesh);
-        case MeshFormat::glb: return glb_bytes(mesh, source);
-    }
-    fail(source, "unknown mesh format");
+    return format.write(mesh, options, source);
 }
 
-MeshArrays parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source) {
+MeshArrays parse_mesh(std::string_view bytes, const MeshFormat& format, const std::string& source) {
+    if (format.read == nullptr)
+        fail(source, "reading " + std::string(format.name) + " is not supported (use " + listed(true) + ")");
     if (bytes.size() > kMaxMeshFileBytes)
         fail(source, std::to_string(bytes.size()) + " bytes, more than the limit of " +
                          std::to_string(kMaxMeshFileBytes) + " bytes for mesh files");
-    switch (format) {
-        case MeshFormat::obj: return read_obj(source, bytes);
-        case MeshFormat::off: return read_off(source, bytes);
-        case MeshFormat::ply: return read_ply(source, bytes);
-        case MeshFormat::stl: return read_stl(source, bytes);
-        case MeshFormat::glb: return read_glb(source, bytes);
-    }
-    fail(source, "unknown mesh format");
+    return format.read(source, bytes);
 }
 
 MeshArrays read_mesh(const std::string& path) {
-    const MeshFormat format = mesh_format_from_path(path);
+    const MeshFormat& format = mesh_format_from_path(path);
+    if (format.read == nullptr) return parse_mesh({}, format, path);  // refused before the file is read
     return parse_mesh(read_file(path), format, path);
 }
 

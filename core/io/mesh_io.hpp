@@ -1,7 +1,7 @@
 #pragma once
 // Mesh files. Writers: OBJ, PLY (binary little-endian), OFF, STL (binary) and
 // GLB (glTF 2.0 binary, Y-up, double-sided material). The format is chosen by
-// the file extension. OBJ and OFF keep the mesh's vertex and face order and
+// the file extension, from the table of mesh_formats.hpp. OBJ and OFF keep the mesh's vertex and face order and
 // write coordinates with 17 significant digits: an exact record. PLY stores
 // float32 by default (what WebGL viewers can draw; exact with
 // MeshWriteOptions::ply_double). OBJ, PLY and GLB carry smooth per-vertex
@@ -12,6 +12,7 @@
 // is one), anything malformed or beyond the limits of mesh_file_types.hpp, before allocating
 // or looping over what a file merely declares (docs/limits-mesh-files.md, "Mesh files").
 #include "core/io/mesh_file_types.hpp"
+#include "core/io/mesh_formats.hpp"
 #include "core/mesh/mesh.hpp"
 #include "core/mesh/vertex_normals.hpp"
 
@@ -23,13 +24,17 @@
 namespace morphogen {
 
 // By extension (case-insensitive); throws IoError for an unknown extension.
-MeshFormat mesh_format_from_path(const std::string& path);
+const MeshFormat& mesh_format_from_path(const std::string& path);
+// The format of `extension` (".glb"); throws std::invalid_argument where no
+// row has it (a mistake in the calling code, not in a user's file).
+const MeshFormat& mesh_format(std::string_view extension);
 
 void write_mesh(MeshView mesh, const std::string& path, const MeshWriteOptions& options = {});
-void write_mesh(MeshView mesh, const std::string& path, MeshFormat format, const MeshWriteOptions& options = {});
+void write_mesh(MeshView mesh, const std::string& path, const MeshFormat& format,
+                const MeshWriteOptions& options = {});
 
 // The bytes write_mesh writes (`source` names the mesh in errors).
-std::string encode_mesh(MeshView mesh, MeshFormat format, const MeshWriteOptions& options = {},
+std::string encode_mesh(MeshView mesh, const MeshFormat& format, const MeshWriteOptions& options = {},
                         const std::string& source = "mesh");
 
 // Reads vertices and triangles (polygons with more than three corners are
@@ -40,6 +45,6 @@ MeshArrays read_mesh(const std::string& path);
 // read_mesh without the file: parses `bytes` in `format`;
 // errors name `source`. Never crashes, hangs or allocates beyond the limits
 // of mesh_file_types.hpp, whatever the bytes (the fuzz targets call this).
-MeshArrays parse_mesh(std::string_view bytes, MeshFormat format, const std::string& source);
+MeshArrays parse_mesh(std::string_view bytes, const MeshFormat& format, const std::string& source);
 
 }  // namespace morphogen

@@ -1,15 +1,21 @@
 #include "evolution/archives/cvt.hpp"
 
+#include "core/base/parallel_for.hpp"
 #include "evolution/rng.hpp"
-#include "evolution/execution/worker_threads.hpp"
 
-#include <omp.h>
 
 #include <algorithm>
+#include <atomic>
 #include <stdexcept>
 #include <string>
 
 namespace morphogen {
+
+namespace {
+// Samples handed to a thread at a time: one sample's nearest centroid is a
+// few hundred flops, too little to hand out alone.
+constexpr std::size_t kCvtGrain = 64;
+}  // namespace
 
 std::size_t nearest_centroid(std::span<const double> centroids, std::span<const double> point) {
     const std::size_t d = point.size();
@@ -50,24 +56,27 @@ std::vector<double> cvt_centroids(std::uint64_t seed, std::uint64_t cells, std::
     std::vector<double> sums(k * dimensions);
     std::vector<std::size_t> members(k);
     for (int round = 0; round < kCvtLloydIterations; ++round) {
-        int changed = 0;
+        std::atomic<bool> changed{false};
         // In blocks, so that a stop is noticed within a fraction of a round;
         // each sample's assignment is its own, so blocks change no result.
         for (std::size_t first = 0; first < count; first += kCvtStopBlock) {
             if (watch.stop && watch.stop()) return {};
             const std::size_t last = std::min(count, first + kCvtStopBlock);
-#pragma omp parallel for schedule(static) num_threads(threads) reduction(| : changed)
-            for (std::size_t j = first; j < last; ++j) {
-                const std::size_t nearest =
-                    nearest_centroid(centroids, std::span<const double>(samples.data() + j * dimensions, dimensions));
-                if (nearest != assignment[j]) {
-                    assignment[j] = nearest;
-                    changed = 1;
-                }
-            }
+            parallel_for(
+                last - first, threads,
+                [&](std::size_t i, int) {
+                    const std::size_t j = first + i;
+                    const std::size_t nearest = nearest_centroid(
+                        centroids, std::span<const double>(samples.data() + j * dimensions, dimensions));
+                    if (nearest != assignment[j]) {
+                        assignment[j] = nearest;
+                        changed.store(true, std::memory_order_relaxed);
+                    }
+                },
+                kCvtGrain);
         }
         if (watch.round_done) watch.round_done(round + 1);
-        if (!changed) break;
+        if (!changed.load()) break;
         std::fill(sums.begin(), sums.end(), 0.0);
         std::fill(members.begin(), members.end(), 0);
         for (std::size_t j = 0; j < count; ++j) {

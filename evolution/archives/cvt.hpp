@@ -47,7 +47,7 @@ inline constexpr std::size_t kCvtStopBlock = 4096;
 
 // Row-major cells x dimensions centroids in [0,1]^dimensions; empty if
 // watch.stop ended the placement. Throws std::invalid_argument unless
-// 1 <= cells <= kMaxCvtCells and dimensions >= 1. threads: resolve_threads (worker_threads.hpp).
+// 1 <= cells <= kMaxCvtCells and dimensions >= 1. threads: resolve_threads (core/base/parallel_for.hpp).
 std::vector<double> cvt_centroids(std::uint64_t seed, std::uint64_t cells, std::size_t dimensions, int threads = 0,
                                   const CvtWatch& watch = {});
 

@@ -5,7 +5,7 @@
 #include "evolution/execution/pipeline.hpp"
 #include "fitness/cost.hpp"
 #include "core/growth/network/network.hpp"
-#include "evolution/execution/worker_threads.hpp"
+#include "core/base/parallel_for.hpp"
 
 #include <unistd.h>
 

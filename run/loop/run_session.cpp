@@ -8,9 +8,7 @@
 #include "run/loop/run_recorder.hpp"
 #include "run/searches/run_search.hpp"
 #include "run/loop/stop_signals.hpp"
-#include "evolution/execution/worker_threads.hpp"
-
-#include <omp.h>
+#include "core/base/parallel_for.hpp"
 
 #include <algorithm>
 #include <optional>
@@ -25,7 +23,7 @@ SessionEvaluator local_evaluator(const RunSession& session, GrowthProblem& probl
     if (config.run.threads > threads)
         session.log.both->warn("run.threads {} is more than can run at once here ({} cores, {} births in flight: {}): "
                                "using {} threads",
-                               config.run.threads, omp_get_num_procs(), schedule.width, schedule.describe(), threads);
+                               config.run.threads, machine_cores(), schedule.width, schedule.describe(), threads);
     return {std::make_unique<ThreadEvaluator>(problem, threads), false};
 }
 

@@ -70,18 +70,6 @@ int wait_for(int pid, bool* killed) {
     return decode_status(status);
 }
 
-std::string tiny_config(int generations, int population, int batch) {
-    return R"({"network": {"outputs": 4, "hidden": [4]},
- "growth": {"steps": 8, "max_vertices": 200},
- "fitness": {"type": "height"},
- "evolution": {"population": )" +
-           std::to_string(population) + R"(, "batch": )" + std::to_string(batch) +
-           R"(, "mutation_rate": 0.2},
- "run": {"generations": )" +
-           std::to_string(generations) + R"(, "seed": 7, "export_every": 0}}
-)";
-}
-
 std::string history_without_times(const fs::path& run_dir) {
     std::istringstream in(read_text(run_dir / "history.csv"));
     std::string line, out;
@@ -118,13 +106,6 @@ std::string q(const fs::path& p) {
     quoted += p.string();
     quoted += '\'';
     return quoted;
-}
-
-std::string tiny_pipeline_config(int generations, int population, int lag) {
-    auto config = nlohmann::json::parse(tiny_config(generations, population));
-    config["evolution"].erase("batch");
-    config["evolution"]["lag"] = lag;
-    return config.dump(1) + "\n";
 }
 
 }  // namespace morphogen::test

@@ -2,6 +2,7 @@
 // Helpers for the evolve/resume tests: running the morphogen executable and
 // comparing run files while ignoring timings (files and temporary directories
 // come from support/temp_dir.hpp).
+#include "tests/run/tiny_configs.hpp"
 #include "tests/support/temp_dir.hpp"
 
 #include <nlohmann/json.hpp>
@@ -33,13 +34,8 @@ int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log, b
 // killed; `killed`, if given, tells the two apart).
 int wait_for(int pid, bool* killed = nullptr);
 
-// A config small enough for a run to take milliseconds.
 // A path quoted for the shell.
 std::string q(const fs::path& p);
-
-std::string tiny_config(int generations, int population = 8, int batch = 3);
-// The same run with the pipeline schedule (evolution.lag) instead of batches.
-std::string tiny_pipeline_config(int generations, int population = 8, int lag = 5);
 
 // history.csv without its two timing columns.
 std::string history_without_times(const fs::path& run_dir);

@@ -1,8 +1,9 @@
 // Checkpoint format 2 (run/persistence/checkpoint.hpp): genomes as exact little-endian
 // doubles after the JSON header line. Exact bits, format-1 files still loading
 // and resuming, refusal of every damaged byte of the binary part and of
-// contradicting genome references, and the size of a large archive. A hidden
-// benchmark ("[.][bench]") measures save and load times for docs/performance.md.
+// contradicting genome references (the states from
+// tests/run/checkpoint_states.hpp; their size: tests/run/, their timings:
+// tests/bench/).
 #include "core/base/atomic_file.hpp"
 #include "core/base/errors.hpp"
 #include "evolution/ga/ga_state_json.hpp"
@@ -12,7 +13,8 @@
 #include "run/config/experiment_config.hpp"
 #include "run/loop/run_records.hpp"
 #include "tests/app/evolve_test_support.hpp"
-#include "tests/app/search_states.hpp"
+#include "tests/run/checkpoint_states.hpp"
+#include "tests/run/search_states.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -43,77 +45,6 @@ std::string small_run(const TempDir& tmp, int generations = 1) {
     return read_text(tmp.path / "run" / "checkpoint.json");
 }
 
-std::size_t header_end(const std::string& bytes) { return bytes.find('\n'); }
-
-bool same_bits(const std::vector<double>& a, const std::vector<double>& b) {
-    return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(double)) == 0;
-}
-
-// A valid run state of generation 0 for `config_text`: `members` random
-// genomes born so far (ids 0.., no parents), the population one more than
-// that so no generation has ended. MAP-Elites: one elite per cell of a
-// 100 x 100 grid (members = 10,000). Genomes of the config's network.
-RunState generation0_state(const std::string& config_text, std::uint64_t members) {
-    const ExperimentConfig config = read_experiment_config(nlohmann::json::parse(config_text), "bench");
-    const std::size_t D = parameter_count(config.network.layers());
-    std::mt19937_64 random(12345);
-    std::normal_distribution<double> normal(0.0, 1.0);
-    std::vector<Individual> born(members);
-    for (std::uint64_t i = 0; i < members; ++i) {
-        born[i].id = i;
-        born[i].params.resize(D);
-        for (double& p : born[i].params) p = normal(random);
-        born[i].fitness = static_cast<double>((i * 7919) % 10007) / 100.0;
-        born[i].size = 100;
-    }
-    RunState state;
-    state.config = config.resolved;
-    state.seed = config.run.seed;
-    state.lineage_bytes = std::string_view(lineage_header).size();
-    state.lineage_hash = "0123456789abcdef";
-    const auto best = std::max_element(born.begin(), born.end(),
-                                       [](const Individual& a, const Individual& b) { return a.fitness < b.fitness; });
-    if (config.algorithm == Algorithm::map_elites) {
-        Archive archive = Archive::grid(config.qd.descriptors);
-        for (std::uint64_t i = 0; i < members; ++i) {
-            born[i].descriptors = {static_cast<double>(i / 100) + 0.5, static_cast<double>(i % 100) + 0.5};
-            archive.restore(i, born[i]);
-        }
-        state.search = std::make_unique<ElitesSearchState>(
-            MapElitesState{members, std::move(archive), *best, 0, members, fresh_emitters(config.qd.emitters)});
-    } else {
-        ga_of(state).births = members;
-        ga_of(state).best = *best;
-        ga_of(state).population = std::move(born);
-    }
-    return state;
-}
-
-// The default network (1845 parameters), MAP-Elites on a 100 x 100 grid.
-std::string archive_config(std::uint64_t population) {
-    return R"({"evolution": {"algorithm": "map_elites", "population": )" + std::to_string(population) +
-           R"(}, "descriptors": [{"measure": "height", "min": 0, "max": 100, "bins": 100},
-           {"measure": "footprint", "min": 0, "max": 100, "bins": 100}], "run": {"generations": 1}})";
-}
-std::string ga_config(std::uint64_t population) {
-    return R"({"evolution": {"population": )" + std::to_string(population) + R"(}, "run": {"generations": 1}})";
-}
-
-// The content format 1 held (genomes inline), as the previous build's save wrote it.
-std::string format1_text(const RunState& s) {
-    nlohmann::json history = nlohmann::json::array();
-    for (const HistoryRow& row : s.history) history.push_back(history_row_to_json(row));
-    nlohmann::json content{{"config", s.config},
-                           {"seed", s.seed},
-                           {"history", std::move(history)},
-                           {"lineage", {{"bytes", s.lineage_bytes}, {"hash", s.lineage_hash}}},
-                           {"elapsed_s", s.elapsed_s}};
-    if (const MapElitesState* elites = elites_state(*s.search))
-        content["map_elites"] = map_elites_state_to_json(*elites);
-    else
-        content["ga"] = ga_state_to_json(ga_of(s));
-    return checkpoint_text(content);
-}
 }  // namespace
 
 TEST_CASE("format 2 keeps every genome's exact bits, -0.0, denormals and 1e308 included", "[app][checkpoint]") {
@@ -297,62 +228,4 @@ TEST_CASE("format 2's genome references and binary part must fit; contradictions
 
     write_text(path, good);
     CHECK(run_morphogen("resume " + q(tmp.path / "run") + " --generations 2").code == 0);
-}
-
-TEST_CASE("an archive of 10,000 elites of the default network checkpoints in under 200 MB", "[app][checkpoint][limits]") {
-    const RunState state = generation0_state(archive_config(20000), 10000);
-    REQUIRE(elites_of(state).archive.occupied() == 10000);
-    const std::size_t D = elites_of(state).best->params.size();
-    REQUIRE(D == 1845);  // 18.45 M parameters in the archive
-    const std::string bytes = checkpoint_bytes(state);
-    const std::size_t header = header_end(bytes) + 1;
-    CHECK(bytes.size() - header == 10001 * D * 8);  // the elites and the best ever, 8 bytes per parameter
-    CHECK(header < 4'000'000);                      // ids, cells, descriptors, fitness: < 400 bytes per elite
-    CHECK(bytes.size() < 200'000'000);
-    // It is a checkpoint load_checkpoint accepts, holding the same state.
-    TempDir tmp("ckpt2-size");
-    write_file_atomically(tmp.path / "checkpoint.json", bytes);
-    const RunState loaded = load_checkpoint(tmp.path / "checkpoint.json");
-    CHECK(elites_of(loaded).archive.occupied() == 10000);
-    CHECK(same_bits(elites_of(loaded).archive.elites().rbegin()->second.params,
-                    elites_of(state).archive.elites().rbegin()->second.params));
-    CHECK(checkpoint_bytes(loaded) == bytes);
-}
-
-// Timings for docs/performance.md ("Checkpoint size and speed"); not part of
-// the suite: build/tests/test_app '[.][bench]' --durations no
-TEST_CASE("benchmark: saving and loading large checkpoints, format 1 against format 2", "[.][bench]") {
-    TempDir tmp("ckpt-bench");
-    using clock = std::chrono::steady_clock;
-    // Median of 5 of the wall-clock time and, in brackets, of the process's CPU time.
-    auto median_s = [](const std::function<void()>& work) {
-        std::vector<double> wall, cpu;
-        for (int i = 0; i < 5; ++i) {
-            const auto t0 = clock::now();
-            const std::clock_t c0 = std::clock();
-            work();
-            cpu.push_back(static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC);
-            wall.push_back(std::chrono::duration<double>(clock::now() - t0).count());
-        }
-        std::sort(wall.begin(), wall.end());
-        std::sort(cpu.begin(), cpu.end());
-        char text[64];
-        std::snprintf(text, sizeof text, "%.3f s (cpu %.3f s)", wall[2], cpu[2]);
-        return std::string(text);
-    };
-    for (const auto& [name, state] : std::vector<std::pair<std::string, RunState>>{
-             {"MAP-Elites, 10,000 elites", generation0_state(archive_config(20000), 10000)},
-             {"GA, population 1,000", generation0_state(ga_config(1001), 1000)}}) {
-        const fs::path v1 = tmp.path / "v1.json", v2 = tmp.path / "v2.json";
-        const std::string save1 = median_s([&] { write_file_atomically(v1, format1_text(state)); });
-        const std::string save2 = median_s([&] { save_checkpoint(v2, state); });
-        const std::string load1 = median_s([&] { (void)load_checkpoint(v1); });
-        const std::string load2 = median_s([&] { (void)load_checkpoint(v2); });
-        const std::string bytes2 = median_s([&] { (void)checkpoint_bytes(state); });
-        const std::string text = checkpoint_bytes(state);
-        const std::string write2 = median_s([&] { write_file_atomically(v2, text); });
-        std::cout << name << ": format 1 " << fs::file_size(v1) << " bytes, save " << save1 << ", load " << load1
-                  << "; format 2 " << fs::file_size(v2) << " bytes, save " << save2 << ", load " << load2
-                  << " (in memory " << bytes2 << ", writing " << write2 << ")\n";
-    }
 }

@@ -6,7 +6,7 @@
 #include "run/persistence/checkpoint_checks.hpp"
 #include "core/base/fnv_hash.hpp"
 #include "tests/app/evolve_test_support.hpp"
-#include "tests/app/search_states.hpp"
+#include "tests/run/search_states.hpp"
 
 #include <catch2/catch.hpp>
 

@@ -6,7 +6,7 @@
 #include "core/base/fnv_hash.hpp"
 #include "run/loop/run_records.hpp"
 #include "tests/app/evolve_test_support.hpp"
-#include "tests/app/search_states.hpp"
+#include "tests/run/search_states.hpp"
 #include "tests/support/sanitizers.hpp"
 
 #include <catch2/catch.hpp>

@@ -166,7 +166,7 @@ TEST_CASE("OBJ and PLY carry the colours (sRGB) and still read back as the same 
     const MeshView mesh = grown.state.mesh.view();
     MeshWriteOptions options;
     options.colours = rgba;
-    const std::string obj = encode_mesh(mesh, MeshFormat::obj, options);
+    const std::string obj = encode_mesh(mesh, mesh_format_from_path("x.obj"), options);
     std::istringstream lines(obj);
     std::string line;
     std::size_t v = 0;
@@ -179,21 +179,21 @@ TEST_CASE("OBJ and PLY carry the colours (sRGB) and still read back as the same 
         ++v;
     }
     CHECK(v == mesh.positions.size());
-    CHECK(parse_mesh(obj, MeshFormat::obj, "test.obj").positions.size() == mesh.positions.size());
-    const std::string ply = encode_mesh(mesh, MeshFormat::ply, options);
+    CHECK(parse_mesh(obj, mesh_format_from_path("x.obj"), "test.obj").positions.size() == mesh.positions.size());
+    const std::string ply = encode_mesh(mesh, mesh_format_from_path("x.ply"), options);
     CHECK(ply.find("property uchar red\nproperty uchar green\nproperty uchar blue\n") != std::string::npos);
-    const std::string plain = encode_mesh(mesh, MeshFormat::ply, {});
+    const std::string plain = encode_mesh(mesh, mesh_format_from_path("x.ply"), {});
     const std::size_t header_lines = 60;  // the three "property uchar ..." lines
     CHECK(ply.size() == plain.size() + header_lines + 3 * mesh.positions.size());
     // The first vertex's colour bytes follow its 6 floats.
     const std::size_t body = ply.find("end_header\n") + 11;
     for (int k = 0; k < 3; ++k)
         CHECK(static_cast<unsigned char>(ply[body + 24 + k]) == std::lround(255.0 * srgb_encode(rgba[k])));
-    const MeshArrays back = parse_mesh(ply, MeshFormat::ply, "test.ply");
+    const MeshArrays back = parse_mesh(ply, mesh_format_from_path("x.ply"), "test.ply");
     CHECK(back.positions.size() == mesh.positions.size());
     CHECK(back.faces.size() == mesh.faces.size());
     options.colours = std::span<const float>(rgba).first(4);
-    CHECK_THROWS_AS(encode_mesh(mesh, MeshFormat::obj, options), std::invalid_argument);
+    CHECK_THROWS_AS(encode_mesh(mesh, mesh_format_from_path("x.obj"), options), std::invalid_argument);
 }
 
 }  // namespace morphogen

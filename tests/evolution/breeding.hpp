@@ -6,7 +6,7 @@
 #include "evolution/execution/pipeline.hpp"
 #include "evolution/execution/schedule.hpp"
 #include "evolution/execution/thread_evaluator.hpp"
-#include "evolution/execution/worker_threads.hpp"
+#include "core/base/parallel_for.hpp"
 
 #include <algorithm>
 #include <cstdint>

@@ -9,7 +9,6 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <iterator>
 #include <sstream>
 #include <random>
@@ -144,33 +143,3 @@ TEST_CASE("z-buffer and ray shooting agree on grown meshes", "[fitness][canopy][
     CHECK(above > 0);
 }
 
-TEST_CASE("canopy evaluation time", "[.][perf]") {
-    auto time_ms = [](MeshView mesh, int runs) {
-        const auto start = std::chrono::steady_clock::now();
-        double sum = 0;
-        for (int r = 0; r < runs; ++r) sum += canopy_area(mesh, {10.0, 0.1});
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        return std::pair{ms / runs, sum / runs};
-    };
-    const MeshArrays blob = make_bumpy(5, 4);  // 2562 vertices, 5120 faces
-    const auto [blob_ms, blob_area] = time_ms(blob.view(), 200);
-    WARN("bumpy blob, " << blob.positions.size() << " vertices: " << blob_ms << " ms per canopy (area " << blob_area
-                        << ")");
-    // Grown meshes (default growth: 200 steps, up to 4000 vertices).
-    const GenomeGrower grower(NetworkParams{}, GrowthParams{});
-    std::mt19937_64 rng(11);
-    std::uniform_real_distribution<double> uniform(-2.0, 2.0);
-    for (int g = 0; g < 4; ++g) {
-        Genome genome{grower.layers(), {}};
-        genome.params.resize(parameter_count(genome.layers));
-        for (double& p : genome.params) p = uniform(rng);
-        GrowthWorkspace workspace;
-        const auto start = std::chrono::steady_clock::now();
-        const GrowthState state = grower.grow(genome.params, workspace);
-        const double grow_ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        const auto [ms, area] = time_ms(state.mesh.view(), 100);
-        WARN("grown, " << state.mesh.num_vertices() << " vertices, height " << mesh_height(state.mesh.view())
-                       << ": " << ms << " ms per canopy (area " << area << "); growth took " << grow_ms << " ms");
-    }
-}

@@ -8,7 +8,6 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <set>
 
@@ -173,14 +172,3 @@ TEST_CASE("descriptor sets evaluate in order; unknown names suggest the nearest"
     CHECK(std::set<std::string>(names.begin(), names.end()).size() == names.size());
 }
 
-TEST_CASE("descriptor measure times", "[.][perf]") {
-    const MeshArrays blob = make_bumpy(5, 4);  // 2562 vertices, 5120 faces
-    for (const DescriptorMeasure& m : descriptor_measures()) {
-        const int runs = 50;
-        const auto start = std::chrono::steady_clock::now();
-        double sum = 0;
-        for (int r = 0; r < runs; ++r) sum += m.measure(blob.view(), {10.0, 0.1});
-        const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-        WARN(m.name << ": " << ms / runs << " ms (value " << sum / runs << ")");
-    }
-}

@@ -32,7 +32,7 @@ Genome genome_for(const ExperimentConfig& config, std::uint64_t seed) {
     return random_genome(config.network.layers(), config.growth.mode, config.evolution.init_range, seed);
 }
 
-tinygltf::Model parse_glb(const std::string& bytes) {
+tinygltf::Model parse_checked_glb(const std::string& bytes) {
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     std::string err, warn;
@@ -72,7 +72,7 @@ float scale_at(const tinygltf::Model& model, const tinygltf::AnimationSampler& s
 // Every structural promise of encode_growth_animation_glb, checked on `frames`.
 void check_animation(const GrowthFrames& frames, double spf) {
     const auto n = frames.meshes.size();
-    const tinygltf::Model model = parse_glb(encode_growth_animation_glb(frames, spf));
+    const tinygltf::Model model = parse_checked_glb(encode_growth_animation_glb(frames, spf));
     REQUIRE(model.scenes.size() == 1);
     REQUIRE(model.scenes[0].nodes == std::vector<int>{0});
     REQUIRE(model.nodes.size() == n + 1);
@@ -290,7 +290,7 @@ TEST_CASE("grow --animate and --frames-obj write the growth without changing the
     const ExperimentConfig config = small_config(24);
     const GrowthFrames frames = record_growth_frames(config, genome_for(config, 4), 6);
     CHECK(read_text(glb) == encode_growth_animation_glb(frames, 0.25));
-    const tinygltf::Model model = parse_glb(read_text(glb));
+    const tinygltf::Model model = parse_checked_glb(read_text(glb));
     REQUIRE(model.meshes.size() == 6);
     for (std::size_t i = 0; i < 6; ++i)
         CHECK(model.accessors.at(static_cast<std::size_t>(model.meshes[i].primitives.at(0).attributes.at("POSITION")))
@@ -298,9 +298,9 @@ TEST_CASE("grow --animate and --frames-obj write the growth without changing the
 
     // The default: 50 frames, or one per step and the seed for short growth.
     REQUIRE(run_morphogen("grow --random 4 --steps 24 -o " + q(mesh) + " --animate " + q(glb)).code == 0);
-    CHECK(parse_glb(read_text(glb)).nodes.size() == 26);
+    CHECK(parse_checked_glb(read_text(glb)).nodes.size() == 26);
     REQUIRE(run_morphogen("grow --random 4 --steps 80 -o " + q(mesh) + " --animate " + q(glb)).code == 0);
-    CHECK(parse_glb(read_text(glb)).nodes.size() == 51);
+    CHECK(parse_checked_glb(read_text(glb)).nodes.size() == 51);
 }
 
 TEST_CASE("grow refuses hostile animation options with one line and exit 2, before writing", "[animation][cli]") {
@@ -330,7 +330,7 @@ TEST_CASE("grow refuses hostile animation options with one line and exit 2, befo
     const std::string no_growth = "grow --random 2 --steps 0 -o " + q(mesh) + " --animate " + q(glb);
     CHECK(run_morphogen(no_growth + " --frames 2").code == 2);
     CHECK(run_morphogen(no_growth).code == 0);
-    CHECK(parse_glb(read_text(glb)).nodes.size() == 2);
+    CHECK(parse_checked_glb(read_text(glb)).nodes.size() == 2);
     // Unwritable places: exit 3 naming them.
     write_text(dir.path / "file", "x");
     CliResult r = run_morphogen(base + "--frames-obj " + q(dir.path / "file"));

@@ -3,7 +3,7 @@
 #include "core/base/append_file.hpp"
 #include "run/growth_problem.hpp"
 #include "run/loop/run_records.hpp"
-#include "tests/app/evolve_test_support.hpp"
+#include "tests/run/tiny_configs.hpp"
 #include "tests/support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>
@@ -15,8 +15,11 @@
 
 using namespace morphogen;
 using namespace morphogen::test;
+using morphogen::testing::read_text;
+using morphogen::testing::TempDir;
+using morphogen::testing::write_text;
 
-TEST_CASE("numbers are written in shortest round-trip form", "[app][records]") {
+TEST_CASE("numbers are written in shortest round-trip form", "[run][records]") {
     for (double v : {0.1, 1.0 / 3.0, 2.0, -0.0, 1e-300, 123456789.123456789, std::nextafter(1.0, 2.0)}) {
         const std::string text = format_number(v);
         CHECK(std::strtod(text.c_str(), nullptr) == v);
@@ -25,7 +28,7 @@ TEST_CASE("numbers are written in shortest round-trip form", "[app][records]") {
     CHECK(format_number(0.1) == "0.1");
 }
 
-TEST_CASE("lineage rows: parents empty when absent and fitness empty when invalid", "[app][records]") {
+TEST_CASE("lineage rows: parents empty when absent and fitness empty when invalid", "[run][records]") {
     Individual initial{3, {}, {}, {}, 0.25};
     CHECK(format_lineage_row(initial) == "3,3,,,0.25\n");
     Individual copied{10, 4, {}, {}, 1.5};
@@ -34,7 +37,7 @@ TEST_CASE("lineage rows: parents empty when absent and fitness empty when invali
     CHECK(format_lineage_row(crossed) == "11,11,4,7,\n");
 }
 
-TEST_CASE("lineage rows and header with descriptor columns", "[app][records]") {
+TEST_CASE("lineage rows and header with descriptor columns", "[run][records]") {
     CHECK(lineage_header_for({}) == lineage_header);
     CHECK(lineage_header_for({"height", "footprint"}) == "id,birth,parent1,parent2,fitness,height,footprint\n");
     Individual measured{5, 1, {}, {}, 2.5};
@@ -50,7 +53,7 @@ TEST_CASE("lineage rows and header with descriptor columns", "[app][records]") {
     CHECK(format_lineage_row(measured, 2) == "5,5,1,,2.5,,\n");
 }
 
-TEST_CASE("history rows round-trip through the checkpoint's JSON", "[app][records]") {
+TEST_CASE("history rows round-trip through the checkpoint's JSON", "[run][records]") {
     HistoryRow row{2, 300, 1.5, 1.25, 1.0, 0.5, 123.5, 4, 12.5, 60.25};
     CHECK(format_history_row(history_row_from_json(history_row_to_json(row))) == format_history_row(row));
     HistoryRow empty{0, 100, {}, {}, {}, {}, {}, 100, 1, 2};
@@ -58,7 +61,7 @@ TEST_CASE("history rows round-trip through the checkpoint's JSON", "[app][record
     CHECK(format_history_row(history_row_from_json(history_row_to_json(empty))) == format_history_row(empty));
 }
 
-TEST_CASE("an append file resumes at a recorded length and refuses a changed prefix", "[app][records]") {
+TEST_CASE("an append file resumes at a recorded length and refuses a changed prefix", "[run][records]") {
     TempDir tmp("append-file");
     const auto path = tmp.path / "rows.csv";
     std::uint64_t length = 0;
@@ -83,7 +86,7 @@ TEST_CASE("an append file resumes at a recorded length and refuses a changed pre
     CHECK_THROWS_WITH(AppendFile::resume(path, length, hash), Catch::Contains("bytes"));
 }
 
-TEST_CASE("a mesh kept from its evaluation exports the bytes of one grown again", "[app][records][export]") {
+TEST_CASE("a mesh kept from its evaluation exports the bytes of one grown again", "[run][records][export]") {
     TempDir tmp("kept-export");
     auto exporting = nlohmann::json::parse(tiny_config(2));
     exporting["run"]["export_every"] = 1;

@@ -31,7 +31,7 @@ std::string errors_of(const json& document) {
 }  // namespace
 
 TEST_CASE("the resolved config records format_version; a config may leave it out or give this build's",
-          "[app][config][migration]") {
+          "[run][config][migration]") {
     const json resolved = read_experiment_config(json::object(), "{}").resolved;
     CHECK(resolved[config_format_key] == config_format_version);
     CHECK(read_experiment_config(resolved, "again").resolved == resolved);
@@ -39,7 +39,7 @@ TEST_CASE("the resolved config records format_version; a config may leave it out
 }
 
 TEST_CASE("a later format_version is refused, naming the newer morphogen; a wrong one names this build's",
-          "[app][config][migration]") {
+          "[run][config][migration]") {
     CHECK_THAT(errors_of(json{{config_format_key, config_format_version + 1}}),
                Catch::Contains("c.json: format_version: format " + std::to_string(config_format_version + 1) +
                                " was written by a newer morphogen"));
@@ -49,7 +49,7 @@ TEST_CASE("a later format_version is refused, naming the newer morphogen; a wron
 }
 
 TEST_CASE("a format-1 config: format_version and the defaults 0.1.0 left out are written out",
-          "[app][config][migration]") {
+          "[run][config][migration]") {
     const json v1 = fixture_config("ga");
     REQUIRE_FALSE(v1.contains(config_format_key));
     const json migrated = migrate_config(v1);
@@ -66,7 +66,7 @@ TEST_CASE("a format-1 config: format_version and the defaults 0.1.0 left out are
 }
 
 TEST_CASE("a format-1 MAP-Elites config without emitters gets 0.1.0's gaussian emitter",
-          "[app][config][migration][map_elites]") {
+          "[run][config][migration][map_elites]") {
     const json v1 = fixture_config("map_elites");
     REQUIRE_FALSE(v1.contains("emitters"));
     const json migrated = migrate_config(v1);
@@ -79,7 +79,7 @@ TEST_CASE("a format-1 MAP-Elites config without emitters gets 0.1.0's gaussian e
 }
 
 TEST_CASE("format 1: a batch schedule, CMA covariance and a tree's trunk_power are written out where left out",
-          "[app][config][migration]") {
+          "[run][config][migration]") {
     const json v1 = json::parse(R"({
         "evolution": {"algorithm": "map_elites", "batch": 8},
         "emitters": [{"kind": "cma_me"}, {"kind": "cma_mae", "covariance": "full"}, {"kind": "iso_line"}],
@@ -98,7 +98,7 @@ TEST_CASE("format 1: a batch schedule, CMA covariance and a tree's trunk_power a
     CHECK_FALSE(migrate_config(json{{"evolution", {{"lag", 4}}}})["evolution"].contains("schedule"));
 }
 
-TEST_CASE("a versioned config or a non-object is returned as it is", "[app][config][migration]") {
+TEST_CASE("a versioned config or a non-object is returned as it is", "[run][config][migration]") {
     const json later{{config_format_key, config_format_version + 1}, {"growth", json::object()}};
     CHECK(migrate_config(later) == later);
     CHECK(migrate_config(json::array()) == json::array());
@@ -109,7 +109,7 @@ TEST_CASE("a versioned config or a non-object is returned as it is", "[app][conf
     CHECK(odd["evolution"] == "x");
 }
 
-TEST_CASE("holds_all_of: every key of the part, with its value, at any depth", "[app][config][migration]") {
+TEST_CASE("holds_all_of: every key of the part, with its value, at any depth", "[run][config][migration]") {
     const json whole = json::parse(R"({"a": 1, "b": {"c": [1, {"d": 2, "e": 3}], "f": "g"}})");
     CHECK(holds_all_of(whole, whole));
     CHECK(holds_all_of(whole, json::object()));

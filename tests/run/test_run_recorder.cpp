@@ -5,7 +5,8 @@
 #include "run/searches/ga_search.hpp"
 #include "run/loop/progress.hpp"
 #include "run/loop/run_recorder.hpp"
-#include "tests/app/evolve_test_support.hpp"
+#include "tests/run/tiny_configs.hpp"
+#include "tests/support/temp_dir.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -14,12 +15,14 @@
 
 using namespace morphogen;
 using namespace morphogen::test;
+using morphogen::testing::read_text;
+using morphogen::testing::TempDir;
 
 namespace {
 std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
 }  // namespace
 
-TEST_CASE("the recorder writes each generation's rows and checkpoints on its cadence", "[app][recorder]") {
+TEST_CASE("the recorder writes each generation's rows and checkpoints on its cadence", "[run][recorder]") {
     TempDir tmp("recorder");
     ExperimentConfig config = read_experiment_config(nlohmann::json::parse(tiny_config(5, 4, 2)), "test");
     config.run.checkpoint_every = 2;

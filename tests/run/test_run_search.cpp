@@ -4,7 +4,7 @@
 #include "run/config/experiment_config.hpp"
 #include "run/growth_problem.hpp"
 #include "run/searches/run_search.hpp"
-#include "tests/app/search_states.hpp"
+#include "tests/run/search_states.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -36,7 +36,7 @@ Individual member(std::uint64_t id, double fitness, std::size_t dimension) {
 }
 }  // namespace
 
-TEST_CASE("every algorithm has one registry row, with its own content key", "[app][search]") {
+TEST_CASE("every algorithm has one registry row, with its own content key", "[run][search]") {
     std::set<std::string> keys;
     for (const SearchKind& kind : search_kinds()) {
         CHECK(&search_kind(kind.algorithm) == &kind);
@@ -48,7 +48,7 @@ TEST_CASE("every algorithm has one registry row, with its own content key", "[ap
     CHECK(search_kind(Algorithm::map_elites).qd_history);
 }
 
-TEST_CASE("a search's first state is stored under its key and read back by its row", "[app][search]") {
+TEST_CASE("a search's first state is stored under its key and read back by its row", "[run][search]") {
     for (const Algorithm algorithm : {Algorithm::steady_state, Algorithm::map_elites}) {
         const ExperimentConfig config = config_for(algorithm);
         const SearchKind& kind = search_kind(algorithm);
@@ -64,7 +64,7 @@ TEST_CASE("a search's first state is stored under its key and read back by its r
     }
 }
 
-TEST_CASE("a GA state's genomes go to the blob and come back, and a copy is its own", "[app][search]") {
+TEST_CASE("a GA state's genomes go to the blob and come back, and a copy is its own", "[run][search]") {
     const ExperimentConfig config = config_for(Algorithm::steady_state);
     GaState ga;
     ga.births = 2;
@@ -94,7 +94,7 @@ TEST_CASE("a GA state's genomes go to the blob and come back, and a copy is its 
     CHECK(copy.births() == 7);
 }
 
-TEST_CASE("a state's history statistics are those of its members", "[app][search]") {
+TEST_CASE("a state's history statistics are those of its members", "[run][search]") {
     const ExperimentConfig config = config_for(Algorithm::steady_state);
     GaState ga;
     ga.births = 2;
@@ -112,7 +112,7 @@ TEST_CASE("a state's history statistics are those of its members", "[app][search
     CHECK(view.members_are_first_births);
 }
 
-TEST_CASE("a started search continues from the state and saves it again", "[app][search]") {
+TEST_CASE("a started search continues from the state and saves it again", "[run][search]") {
     const ExperimentConfig config = config_for(Algorithm::steady_state);
     GrowthProblem problem(config);
     GaSearchState state;
