@@ -215,7 +215,7 @@ std::vector<double> BreedSession::child_of(const std::vector<std::string>& paren
 
 const BreedPlant& BreedSession::plant(const std::string& id) const {
     const auto it = plants_.find(id);
-    if (it == plants_.end()) throw not_found("no plant \"" + id + "\" in this session");
+    if (it == plants_.end()) throw not_found("no plant " + quoted(id) + " in this session");
     return it->second;
 }
 
@@ -228,7 +228,7 @@ void BreedSession::check_parents(const std::vector<std::string>& parents) const 
     for (const std::string& id : parents) {
         plant(id);
         if (std::find(grid.begin(), grid.end(), id) == grid.end())
-            throw bad_request("plant \"" + id + "\" is not in the current grid");
+            throw bad_request("plant " + quoted(id) + " is not in the current grid");
     }
 }
 
@@ -442,7 +442,7 @@ void BreedSession::start_explore(const std::vector<std::string>& parents, int bi
     for (const std::string& id : parents) {
         const BreedPlant& p = plant(id);
         if (!p.fitness || p.descriptors.empty())
-            throw bad_request("plant \"" + id + "\" has no valid fitness or descriptors: the search cannot place it");
+            throw bad_request("plant " + quoted(id) + " has no valid fitness or descriptors: the search cannot place it");
         seeds.push_back({p.params, *p.fitness, p.descriptors});
     }
     // Finished searches are joined here, outside the thread that runs them.
@@ -640,7 +640,7 @@ void BreedSession::apply(const json& choice) {
         std::vector<ExploreSeed> seeds;
         for (const std::string& id : parents) {
             const BreedPlant& p = plant(id);
-            if (!p.fitness || p.descriptors.empty()) throw bad_request("plant \"" + id + "\" cannot seed a search");
+            if (!p.fitness || p.descriptors.empty()) throw bad_request("plant " + quoted(id) + " cannot seed a search");
             seeds.push_back({p.params, *p.fitness, p.descriptors});
         }
         const std::uint64_t seed = RandomStream(config_.run.seed, next_plant_ | (std::uint64_t{1} << 62)).next_u64() >> 11;
@@ -653,7 +653,7 @@ void BreedSession::apply(const json& choice) {
         }
         finish_explore(std::move(result), parents, choice.at("births").get<int>());
     } else {
-        throw bad_request("unknown choice \"" + kind + "\"");
+        throw bad_request("unknown choice " + quoted(kind));
     }
 }
 
