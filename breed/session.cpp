@@ -18,6 +18,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -72,6 +73,27 @@ std::vector<double> load_genome_for_session(const PlantGrowth& growth, const fs:
 
 std::string csv_list(const std::vector<std::string>& parents, std::size_t i) {
     return i < parents.size() ? parents[i] : std::string();
+}
+
+// Removes the files under genomes/, meshes/ and thumbs/ that no plant of
+// `plants` owns: those of a choice a kill cut short before its state was
+// written, and the temporaries of writes it interrupted. A later choice may
+// never take their ids again (an undo, or the session's end), and replay
+// would not write them. Returns them relative to `dir`, sorted.
+std::vector<std::string> remove_unowned_plant_files(const fs::path& dir, const std::map<std::string, BreedPlant>& plants) {
+    std::vector<std::string> removed;
+    for (const auto& [folder, suffix] : {std::pair{"genomes", ".genome.json"}, {"meshes", ".glb"}, {"thumbs", ".png"}}) {
+        if (!fs::is_directory(dir / folder)) continue;
+        for (const fs::directory_entry& entry : fs::directory_iterator(dir / folder)) {
+            const std::string name = entry.path().filename().string();
+            const bool owned = name.ends_with(suffix) && plants.contains(name.substr(0, name.size() - std::strlen(suffix)));
+            if (owned || !(entry.is_regular_file() || entry.is_symlink())) continue;
+            fs::remove(entry.path());
+            removed.push_back(std::string(folder) + "/" + name);
+        }
+    }
+    std::sort(removed.begin(), removed.end());
+    return removed;
 }
 }  // namespace
 
@@ -579,6 +601,7 @@ std::unique_ptr<BreedSession> BreedSession::resume(const fs::path& dir, BreedSes
         session->choices_file_ = std::make_unique<AppendFile>(AppendFile::resume(
             dir / "choices.jsonl", state.at("choices_bytes").get<std::uint64_t>(),
             state.at("choices_hash").get<std::string>()));
+        session->removed_on_resume_ = remove_unowned_plant_files(dir, session->plants_);
         write_file_atomically(dir / "lineage.csv", session->lineage_csv());
         return session;
     } catch (const json::exception& e) {

@@ -67,8 +67,9 @@ public:
     static std::unique_ptr<BreedSession> create(const std::filesystem::path& dir, const ExperimentConfig& config,
                                                 const std::vector<std::vector<double>>& from,
                                                 BreedSessionOptions options = {});
-    // Continues the session in `dir` as its state.json left it (a choice
-    // whose state.json was never written is dropped from choices.jsonl).
+    // Continues the session in `dir` as its state.json left it: a choice
+    // whose state.json was never written is dropped from choices.jsonl, and
+    // its plants' files removed (removed_on_resume() names them).
     // Refused with IoError, nothing read or written, while another session
     // (in this or another process) holds the directory; a process killed
     // with kill -9 holds nothing (the lock is flock(2) on <dir>/.lock).
@@ -105,6 +106,9 @@ public:
     std::string thumb_png(const std::string& id);
 
     const std::filesystem::path& dir() const { return dir_; }
+    // The plant files resume() removed because no recorded choice owns them
+    // (relative to dir(), sorted; empty for a session closed cleanly).
+    const std::vector<std::string>& removed_on_resume() const { return removed_on_resume_; }
     std::string name() const;
     std::uint64_t seed() const { return config_.run.seed; }
 
@@ -147,6 +151,7 @@ private:
     std::vector<BreedStep> steps_;  // steps_[cursor_] is the grid shown
     std::size_t cursor_ = 0;
     std::uint64_t choices_ = 0;
+    std::vector<std::string> removed_on_resume_;
     std::unique_ptr<RunLock> lock_;  // one writer per session directory, for the session's life
     std::unique_ptr<AppendFile> choices_file_;
     mutable std::mutex mutex_;
