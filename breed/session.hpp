@@ -25,6 +25,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -129,9 +130,18 @@ private:
     Saved saved_point() const;
     void roll_back(const Saved& saved);
     // Runs `change` (which ends with record()); if it throws, rolls back and rethrows.
-    template <class Change> void as_one_choice(Change&& change);
+    void as_one_choice(const std::function<void()>& change);
     void apply(const nlohmann::json& choice);  // replay: one line of choices.jsonl
+    // The explore search's seeds (400 for a parent it cannot place) and its random seed.
+    std::vector<ExploreSeed> explore_seeds(const std::vector<std::string>& parents) const;
+    std::uint64_t explore_seed() const;
     void finish_explore(ExploreResult result, std::vector<std::string> parents, int births);
+    // Replay of an explore choice: the search run for the `done` births it made.
+    void replay_explore(const std::vector<std::string>& parents, int births, std::uint64_t done);
+    // Plant files (session_plants.cpp): removes one plant's, best effort; and
+    // those of plants not in plants_, returned relative to dir_, sorted.
+    void remove_plant_files(const std::string& id) const;
+    std::vector<std::string> remove_unowned_plant_files() const;
     void breed_locked(const std::vector<std::string>& parents, double strength);
     void undo_locked();
     void redo_locked();
