@@ -308,6 +308,68 @@ SearchGenomes search_genomes(const ExperimentConfig& config) {
     return {2 * P + 2 * flight + pending + 3, P + pending + 1};
 }
 
+namespace {
+
+// The memory of a search: its genomes (population or archive, births in
+// flight, best), files kept for export, CMA's covariance matrices, and a
+// checkpoint written or read. Sets e.genomes and e.checkpoint_bytes.
+void add_search_memory(ResourceEstimate& e, const ExperimentConfig& config, double D, double v) {
+    // Genome memory is population x parameters: name first whichever is
+    // further above its default.
+    const double default_parameters = static_cast<double>(parameter_count(NetworkParams{}.layers()));
+    const bool elites = config.algorithm == Algorithm::map_elites;
+    const double genomes = elites ? static_cast<double>(config.qd.cells()) : config.evolution.population;
+    const bool population_first = genomes / double(GaParams{}.population) >= D / default_parameters;
+    const auto genome_keys = [&](const std::vector<std::string>& search_keys) {
+        return population_first ? with(search_keys, network_keys) : with(network_keys, search_keys);
+    };
+    // A MAP-Elites archive's size is set by its cells: the bins of a grid, archive.cells of a CVT.
+    const std::string cells_key = config.qd.archive == ArchiveKind::cvt ? "archive.cells" : "descriptors";
+    e.genomes = search_genomes(config);
+    e.memory.push_back({group(e.genomes.held) +
+                            (elites ? " genomes (a full archive of " + group(genomes) +
+                                          " cells twice, births in flight, best) x "
+                                    : std::string(" genomes (population, births in flight, best) x ")) +
+                            group(D) + " parameters",
+                        genome_keys(elites ? std::vector<std::string>{cells_key, in_flight_key(config.evolution)}
+                                           : std::vector<std::string>{"evolution.population",
+                                                                      in_flight_key(config.evolution)}),
+                        e.genomes.held * (8 * D + genome_overhead)});
+    // Births that could become the exported best keep their export files
+    // until they are inserted: at most kMaxKeepingBirths in flight.
+    if (config.run.export_every > 0) {
+        const double kept =
+            std::min(births_in_flight(config.evolution), static_cast<double>(kMaxKeepingBirths));
+        e.memory.push_back({group(kept) + " births in flight keeping the files of a mesh of up to " + group(v) +
+                                " vertices to export",
+                            {"growth.max_vertices", "run.export_every"}, kept * v * export_bytes_per_vertex});
+    }
+    // CMA emitters with a full covariance: C, its eigenvectors, the
+    // eigensolver's copy and the update's new C, n x n doubles each; C goes
+    // into every checkpoint too.
+    double full_matrices = 0;
+    if (elites)
+        for (const EmitterSpec& emitter : config.qd.emitters)
+            full_matrices += static_cast<double>(emitter.emitter->square_matrices());
+    if (full_matrices > 0)
+        e.memory.push_back({group(full_matrices) + " full covariance matrices of " + group(D) + " x " + group(D) +
+                                " (C, its eigenvectors, the solver's and the update's copies)",
+                            with({"emitters"}, network_keys), full_matrices * 4 * 8 * D * D});
+    const double kept = e.genomes.checkpointed;
+    const double rows = static_cast<double>(config.run.generations) + 1;
+    const double header = kept * checkpoint_text_per_genome + rows * checkpoint_text_per_row + checkpoint_fixed;
+    e.checkpoint_bytes = (kept + full_matrices * D) * D * checkpoint_bytes_per_param + header;
+    const double tree = kept * checkpoint_tree_per_genome + rows * checkpoint_tree_per_row + checkpoint_fixed;
+    e.memory.push_back({"writing or reading a checkpoint of up to " + format_bytes(e.checkpoint_bytes) + " (" +
+                            group(kept) + " genomes, " + group(rows) + " history rows)",
+                        genome_keys(elites ? std::vector<std::string>{cells_key, "run.generations"}
+                                           : std::vector<std::string>{"evolution.population", "run.generations"}),
+                        e.checkpoint_bytes + checkpoint_texts_alive * header + checkpoint_trees_alive * tree +
+                            rows * history_row_bytes});
+}
+
+}  // namespace
+
 ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedExtent& seed, const Workload& w) {
     ResourceEstimate e;
     const std::vector<int> layers = config.network.layers();
@@ -377,60 +439,7 @@ ResourceEstimate estimate_resources(const ExperimentConfig& config, const SeedEx
     if (w.kept_meshes > 0)
         e.memory.push_back({group(w.kept_meshes) + " meshes of up to " + group(v) + " vertices kept for the sheet",
                             {"growth.max_vertices"}, w.kept_meshes * v * kept_mesh_bytes_per_vertex});
-    if (w.evolution) {
-        // Genome memory is population x parameters: name first whichever is
-        // further above its default.
-        const double default_parameters = static_cast<double>(parameter_count(NetworkParams{}.layers()));
-        const bool elites = config.algorithm == Algorithm::map_elites;
-        const double genomes = elites ? static_cast<double>(config.qd.cells()) : config.evolution.population;
-        const bool population_first = genomes / double(GaParams{}.population) >= D / default_parameters;
-        const auto genome_keys = [&](const std::vector<std::string>& search_keys) {
-            return population_first ? with(search_keys, network_keys) : with(network_keys, search_keys);
-        };
-        // A MAP-Elites archive's size is set by its cells: the bins of a grid, archive.cells of a CVT.
-        const std::string cells_key = config.qd.archive == ArchiveKind::cvt ? "archive.cells" : "descriptors";
-        e.genomes = search_genomes(config);
-        e.memory.push_back({group(e.genomes.held) +
-                                (elites ? " genomes (a full archive of " + group(genomes) +
-                                              " cells twice, births in flight, best) x "
-                                        : std::string(" genomes (population, births in flight, best) x ")) +
-                                group(D) + " parameters",
-                            genome_keys(elites ? std::vector<std::string>{cells_key, in_flight_key(config.evolution)}
-                                               : std::vector<std::string>{"evolution.population",
-                                                                          in_flight_key(config.evolution)}),
-                            e.genomes.held * (8 * D + genome_overhead)});
-        // Births that could become the exported best keep their export files
-        // until they are inserted: at most kMaxKeepingBirths in flight.
-        if (config.run.export_every > 0) {
-            const double kept =
-                std::min(births_in_flight(config.evolution), static_cast<double>(kMaxKeepingBirths));
-            e.memory.push_back({group(kept) + " births in flight keeping the files of a mesh of up to " + group(v) +
-                                    " vertices to export",
-                                {"growth.max_vertices", "run.export_every"}, kept * v * export_bytes_per_vertex});
-        }
-        // CMA emitters with a full covariance: C, its eigenvectors, the
-        // eigensolver's copy and the update's new C, n x n doubles each; C goes
-        // into every checkpoint too.
-        double full_matrices = 0;
-        if (elites)
-            for (const EmitterSpec& emitter : config.qd.emitters)
-                full_matrices += static_cast<double>(emitter.emitter->square_matrices());
-        if (full_matrices > 0)
-            e.memory.push_back({group(full_matrices) + " full covariance matrices of " + group(D) + " x " + group(D) +
-                                    " (C, its eigenvectors, the solver's and the update's copies)",
-                                with({"emitters"}, network_keys), full_matrices * 4 * 8 * D * D});
-        const double kept = e.genomes.checkpointed;
-        const double rows = static_cast<double>(config.run.generations) + 1;
-        const double header = kept * checkpoint_text_per_genome + rows * checkpoint_text_per_row + checkpoint_fixed;
-        e.checkpoint_bytes = (kept + full_matrices * D) * D * checkpoint_bytes_per_param + header;
-        const double tree = kept * checkpoint_tree_per_genome + rows * checkpoint_tree_per_row + checkpoint_fixed;
-        e.memory.push_back({"writing or reading a checkpoint of up to " + format_bytes(e.checkpoint_bytes) + " (" +
-                                group(kept) + " genomes, " + group(rows) + " history rows)",
-                            genome_keys(elites ? std::vector<std::string>{cells_key, "run.generations"}
-                                               : std::vector<std::string>{"evolution.population", "run.generations"}),
-                            e.checkpoint_bytes + checkpoint_texts_alive * header + checkpoint_trees_alive * tree +
-                                rows * history_row_bytes});
-    }
+    if (w.evolution) add_search_memory(e, config, D, v);
     return e;
 }
 

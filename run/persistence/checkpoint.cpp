@@ -256,6 +256,46 @@ void save_checkpoint(const std::filesystem::path& path, const RunState& state) {
     write_file_atomically(path, parts);
 }
 
+namespace {
+
+CheckpointError refused(const std::filesystem::path& path, const std::string& why) {
+    return CheckpointError("checkpoint " + path.string() + " refused: " + why);
+}
+
+// The checkpoint's config (`stored`), resolved, with `seed` as its run.seed.
+ExperimentConfig checkpoint_config(const json& stored, std::uint64_t seed, const std::filesystem::path& path) {
+    // A config without format_version is of format 1 (0.1.0's checkpoints,
+    // versions 1 and 2) and migrated (run/config/config_migration.hpp); version 1
+    // is also how tools seal an edited content (checkpoint_text), so it
+    // may hold either format.
+    const bool current = stored.is_object() && stored.contains(config_format_key);
+    ExperimentConfig config;
+    try {
+        config = read_experiment_config(migrate_config(stored), "checkpoint config");
+    } catch (const ConfigError& e) {
+        throw refused(path, std::string("its config is not valid: ") + e.what());
+    }
+    if (current ? config.resolved != stored : !holds_all_of(config.resolved, stored))
+        throw refused(path, "its config is not a resolved config");
+    if (config.run.seed != seed) throw refused(path, "its seed differs from its config's run.seed");
+    return config;
+}
+
+// The history rows: one per generation, in order, of the search's kind.
+void read_history(RunState& state, const json& content, const SearchKind& search, std::uint64_t P,
+                  const std::filesystem::path& path) {
+    for (const json& row : content.at("history")) state.history.push_back(history_row_from_json(row));
+    if (state.history.size() != state.births() / P)
+        throw refused(path, std::to_string(state.history.size()) + " history rows for " +
+                                std::to_string(state.births()) + " births");
+    for (const HistoryRow& row : state.history)
+        if (row.qd != search.qd_history) throw refused(path, "its history rows do not fit its algorithm");
+    for (std::size_t g = 0; g < state.history.size(); ++g)
+        if (state.history[g].generation != g) throw refused(path, "history rows out of order");
+}
+
+}  // namespace
+
 RunState load_checkpoint(const std::filesystem::path& path) {
     std::string text;
     try {
@@ -265,28 +305,13 @@ RunState load_checkpoint(const std::filesystem::path& path) {
     }
     const Envelope envelope = open_envelope(text, path.string());
     const json& content = envelope.content;
-    auto refuse = [&](const std::string& why) -> CheckpointError {
-        return CheckpointError("checkpoint " + path.string() + " refused: " + why);
-    };
+    auto refuse = [&](const std::string& why) { return refused(path, why); };
     RunState state;
     try {
-        // A config without format_version is of format 1 (0.1.0's checkpoints,
-        // versions 1 and 2) and migrated (run/config/config_migration.hpp); version 1
-        // is also how tools seal an edited content (checkpoint_text), so it
-        // may hold either format.
         const json& stored = content.at("config");
-        const bool current = stored.is_object() && stored.contains(config_format_key);
         state.seed = content.at("seed").get<std::uint64_t>();
-        ExperimentConfig config;
-        try {
-            config = read_experiment_config(migrate_config(stored), "checkpoint config");
-        } catch (const ConfigError& e) {
-            throw refuse(std::string("its config is not valid: ") + e.what());
-        }
-        if (current ? config.resolved != stored : !holds_all_of(config.resolved, stored))
-            throw refuse("its config is not a resolved config");
+        const ExperimentConfig config = checkpoint_config(stored, state.seed, path);
         state.config = config.resolved;
-        if (config.run.seed != state.seed) throw refuse("its seed differs from its config's run.seed");
         const std::size_t dimension = parameter_count(config.network.layers());
         const auto P = static_cast<std::uint64_t>(config.evolution.population);
         if (content.size() != (content.contains("pending") ? 7u : 6u)) throw refuse("unexpected keys in its content");
@@ -312,14 +337,7 @@ RunState load_checkpoint(const std::filesystem::path& path) {
             throw refuse(std::string("its config is a ") + algorithm_name(config.algorithm) + " run but it holds no " +
                          search.key + " state");
         state.search = search.load(content.at(search.key), config, dimension, genomes);
-        for (const json& row : content.at("history")) state.history.push_back(history_row_from_json(row));
-        if (state.history.size() != state.births() / P)
-            throw refuse(std::to_string(state.history.size()) + " history rows for " +
-                         std::to_string(state.births()) + " births");
-        for (const HistoryRow& row : state.history)
-            if (row.qd != search.qd_history) throw refuse("its history rows do not fit its algorithm");
-        for (std::size_t g = 0; g < state.history.size(); ++g)
-            if (state.history[g].generation != g) throw refuse("history rows out of order");
+        read_history(state, content, search, P, path);
         state.lineage_bytes = content.at("lineage").at("bytes").get<std::uint64_t>();
         state.lineage_hash = content.at("lineage").at("hash").get<std::string>();
         state.elapsed_s = content.at("elapsed_s").get<double>();
