@@ -112,6 +112,12 @@ int run_breed(const BreedOptions& o) {
     std::unique_ptr<BreedSession> session;
     if (!o.resume.empty()) {
         session = BreedSession::resume(o.resume, session_options);
+        if (const std::vector<std::string>& removed = session->removed_on_resume(); !removed.empty()) {
+            std::cerr << "morphogen breed: removed " << removed.size()
+                      << " plant files that no recorded choice owns (a choice cut short):";
+            for (const std::string& file : removed) std::cerr << " " << file;
+            std::cerr << "\n";
+        }
     } else {
         const ExperimentConfig config = breed_config(o);
         std::vector<std::vector<double>> from;

@@ -5,6 +5,7 @@
 #include "core/base/json_text.hpp"
 #include "breed/breed_assets.hpp"
 #include "breed/breed_errors.hpp"
+#include "breed/request_body.hpp"
 #include "engine/plant_wind.hpp"
 
 #include <httplib.h>
@@ -44,7 +45,11 @@ struct Reply {
     std::string body;
 };
 
-Reply json_reply(const json& body, int status = 200) { return {status, "application/json", body.dump()}; }
+// Invalid UTF-8 (a request's bytes quoted in a message) becomes U+FFFD
+// rather than an exception: an error must always reach the client.
+std::string json_text(const json& body) { return body.dump(-1, ' ', false, json::error_handler_t::replace); }
+
+Reply json_reply(const json& body, int status = 200) { return {status, "application/json", json_text(body)}; }
 
 // Compares without stopping at the first difference (the token).
 bool same_secret(std::string_view a, std::string_view b) {
@@ -68,9 +73,9 @@ bool ends_with(std::string_view s, std::string_view e) {
 }
 
 // The JSON object of a request body; 400 for anything else.
-json body_object(const httplib::Request& req) {
+json body_object(const std::string& body) {
     try {
-        return read_json_object(req.body);
+        return read_json_object(body);
     } catch (const JsonTextError& e) {
         throw bad_request(std::string("the body is not a JSON object: ") + e.what());
     }
@@ -80,7 +85,7 @@ void allow_only(const json& body, std::initializer_list<const char*> keys) {
     for (const auto& [key, value] : body.items()) {
         bool known = false;
         for (const char* k : keys) known = known || key == k;
-        if (!known) throw bad_request("unknown field \"" + key + "\"");
+        if (!known) throw bad_request("unknown field " + quoted(key));
     }
 }
 
@@ -147,41 +152,41 @@ struct BreedServer::Impl {
     // The route of a path: the methods it answers, and what it does.
     struct Route {
         std::vector<std::string> methods;
-        std::function<Reply(const httplib::Request&)> serve;
+        std::function<Reply(const std::string& body)> serve;
     };
 
     std::optional<Route> route(const std::string& path) {
         auto get = [](auto f) { return Route{{"GET"}, f}; };
         auto post = [](auto f) { return Route{{"POST"}, f}; };
         if (path == "/" || path == "/index.html")
-            return get([](const httplib::Request&) {
+            return get([](const std::string&) {
                 const auto page = breed_asset("index.html");
                 if (!page) throw not_found("this build has no page (breed/assets/index.html)");
                 return Reply{200, "text/html; charset=utf-8", std::string(*page)};
             });
-        if (path == "/api/state") return get([this](const httplib::Request&) { return json_reply(session.state_json()); });
+        if (path == "/api/state") return get([this](const std::string&) { return json_reply(session.state_json()); });
         if (path == "/api/lineage")
-            return get([this](const httplib::Request&) { return json_reply(session.lineage_json()); });
+            return get([this](const std::string&) { return json_reply(session.lineage_json()); });
         if (path == "/api/breed")
-            return post([this](const httplib::Request& req) {
-                const json body = body_object(req);
+            return post([this](const std::string& body_text) {
+                const json body = body_object(body_text);
                 allow_only(body, {"parents", "strength"});
                 session.breed(parents_of(body), number_field(body, "strength", 0.5));
                 return json_reply(session.state_json());
             });
         if (path == "/api/undo")
-            return post([this](const httplib::Request&) {
+            return post([this](const std::string&) {
                 session.undo();
                 return json_reply(session.state_json());
             });
         if (path == "/api/redo")
-            return post([this](const httplib::Request&) {
+            return post([this](const std::string&) {
                 session.redo();
                 return json_reply(session.state_json());
             });
         if (path == "/api/export")
-            return post([this](const httplib::Request& req) {
-                const json body = body_object(req);
+            return post([this](const std::string& body_text) {
+                const json body = body_object(body_text);
                 allow_only(body, {"id", "height", "lods", "wind", "wind_presets"});
                 if (!body.contains("id") || !body.at("id").is_string())
                     throw bad_request("missing field \"id\" (a plant id)");
@@ -197,29 +202,29 @@ struct BreedServer::Impl {
                 return json_reply({{"genome", genome}, {"mesh", mesh}});
             });
         if (path == "/api/explore")
-            return post([this](const httplib::Request& req) {
-                const json body = body_object(req);
+            return post([this](const std::string& body_text) {
+                const json body = body_object(body_text);
                 allow_only(body, {"parents", "births"});
                 session.start_explore(parents_of(body), integer_field(body, "births", 400, 1, kMaxExploreBirths));
                 return json_reply(session.state_json(), 202);
             });
         if (path == "/api/explore/stop")
-            return post([this](const httplib::Request&) {
+            return post([this](const std::string&) {
                 session.stop_explore();
                 return json_reply(session.state_json());
             });
         if (path.starts_with("/api/mesh/"))
-            return get([this, path](const httplib::Request&) {
+            return get([this, path](const std::string&) {
                 return Reply{200, "model/gltf-binary", session.mesh_glb(id_in(path, "/api/mesh/", ".glb"))};
             });
         if (path.starts_with("/api/thumb/"))
-            return get([this, path](const httplib::Request&) {
+            return get([this, path](const std::string&) {
                 return Reply{200, "image/png", session.thumb_png(id_in(path, "/api/thumb/", ".png"))};
             });
         if (path.starts_with("/assets/three/"))
-            return get([this, path](const httplib::Request&) { return three_file(path.substr(14)); });
+            return get([this, path](const std::string&) { return three_file(path.substr(14)); });
         if (path.starts_with("/assets/"))
-            return get([path](const httplib::Request&) {
+            return get([path](const std::string&) {
                 const std::string name = path.substr(8);
                 const auto text = breed_asset(name);
                 if (!text) throw not_found("no such file: " + path);
@@ -255,7 +260,8 @@ struct BreedServer::Impl {
         return {0, ""};
     }
 
-    void handle(const httplib::Request& req, httplib::Response& res) {
+    // Answers `req`, whose body (read within kMaxBreedBody) is `body`.
+    void handle(const httplib::Request& req, const std::string& body, httplib::Response& res) {
         Reply reply;
         try {
             if (const auto [status, why] = refusal(req); status != 0) {
@@ -270,11 +276,11 @@ struct BreedServer::Impl {
                                        405);
                     res.set_header("Allow", r->methods.front());
                 } else {
-                    reply = r->serve(req);
+                    reply = r->serve(body);
                 }
             }
         } catch (const BreedRequestError& e) {
-            reply = json_reply({{"error", e.what()}}, e.status);
+            reply = json_reply({{"error", e.message}}, e.status);
         } catch (const std::exception& e) {
             reply = json_reply({{"error", std::string("the server could not do it: ") + e.what()}}, 500);
         }
@@ -291,18 +297,32 @@ BreedServer::BreedServer(BreedSession& session, BreedServerOptions options)
     m.server.new_task_queue = [] { return new httplib::ThreadPool(16); };
     m.server.set_payload_max_length(kMaxBreedBody);
     m.server.set_error_handler(httplib::Server::HandlerWithResponse([](const httplib::Request&, httplib::Response& res) {
-        if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+        // Ours (a body, or a body provider with its type) stand; httplib's own get a sentence.
+        if (!res.body.empty() || res.has_header("Content-Type")) return httplib::Server::HandlerResponse::Unhandled;
         const std::string why = res.status == 413 ? "the request body is larger than " + std::to_string(kMaxBreedBody) + " bytes"
                                                   : "the request was refused (HTTP " + std::to_string(res.status) + ")";
         res.set_content(json{{"error", why}}.dump(), "application/json");
         return httplib::Server::HandlerResponse::Handled;
     }));
-    auto handler = [&m](const httplib::Request& req, httplib::Response& res) { m.handle(req, res); };
+    auto handler = [&m](const httplib::Request& req, httplib::Response& res) { m.handle(req, req.body, res); };
+    // Methods that may carry a body read it here, within kMaxBreedBody
+    // (breed/request_body.hpp); what is left unread closes the connection.
+    auto with_body = [&m](const httplib::Request& req, httplib::Response& res, const httplib::ContentReader& reader) {
+        const RequestBody body = read_request_body(req, reader, kMaxBreedBody);
+        if (body.outcome == RequestBody::Outcome::too_large)
+            answer_and_close(res, 413, json_text({{"error", "the request body is larger than " +
+                                                                 std::to_string(kMaxBreedBody) + " bytes"}}));
+        else if (body.outcome == RequestBody::Outcome::unreadable)
+            answer_and_close(res, 400, json_text({{"error", "the request body could not be read: cut short, or framed "
+                                                            "other than by Content-Length or chunked transfer encoding"}}));
+        else
+            m.handle(req, body.bytes, res);
+    };
     m.server.Get(".*", handler);
-    m.server.Post(".*", handler);
-    m.server.Put(".*", handler);
-    m.server.Patch(".*", handler);
-    m.server.Delete(".*", handler);
+    m.server.Post(".*", with_body);
+    m.server.Put(".*", with_body);
+    m.server.Patch(".*", with_body);
+    m.server.Delete(".*", with_body);
     m.server.Options(".*", handler);
     if (m.options.port == 0) {
         m.port = m.server.bind_to_any_port(m.options.bind);

@@ -4,7 +4,8 @@
 // one BreedSession (docs/breed-api.md, "The API"). Every request needs the
 // session token (query `token=` or `Authorization: Bearer`); a Host or
 // Origin that is not the server's own gets 403 (DNS rebinding); bodies over
-// kMaxBreedBody get 413; every error body is {"error": "..."}.
+// kMaxBreedBody get 413, chunked ones too, with no more read than that;
+// every error body is {"error": "..."}.
 #include "breed/session.hpp"
 
 #include <cstddef>

@@ -25,6 +25,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -67,8 +68,9 @@ public:
     static std::unique_ptr<BreedSession> create(const std::filesystem::path& dir, const ExperimentConfig& config,
                                                 const std::vector<std::vector<double>>& from,
                                                 BreedSessionOptions options = {});
-    // Continues the session in `dir` as its state.json left it (a choice
-    // whose state.json was never written is dropped from choices.jsonl).
+    // Continues the session in `dir` as its state.json left it: a choice
+    // whose state.json was never written is dropped from choices.jsonl, and
+    // its plants' files removed (removed_on_resume() names them).
     // Refused with IoError, nothing read or written, while another session
     // (in this or another process) holds the directory; a process killed
     // with kill -9 holds nothing (the lock is flock(2) on <dir>/.lock).
@@ -105,6 +107,9 @@ public:
     std::string thumb_png(const std::string& id);
 
     const std::filesystem::path& dir() const { return dir_; }
+    // The plant files resume() removed because no recorded choice owns them
+    // (relative to dir(), sorted; empty for a session closed cleanly).
+    const std::vector<std::string>& removed_on_resume() const { return removed_on_resume_; }
     std::string name() const;
     std::uint64_t seed() const { return config_.run.seed; }
 
@@ -125,9 +130,18 @@ private:
     Saved saved_point() const;
     void roll_back(const Saved& saved);
     // Runs `change` (which ends with record()); if it throws, rolls back and rethrows.
-    template <class Change> void as_one_choice(Change&& change);
+    void as_one_choice(const std::function<void()>& change);
     void apply(const nlohmann::json& choice);  // replay: one line of choices.jsonl
+    // The explore search's seeds (400 for a parent it cannot place) and its random seed.
+    std::vector<ExploreSeed> explore_seeds(const std::vector<std::string>& parents) const;
+    std::uint64_t explore_seed() const;
     void finish_explore(ExploreResult result, std::vector<std::string> parents, int births);
+    // Replay of an explore choice: the search run for the `done` births it made.
+    void replay_explore(const std::vector<std::string>& parents, int births, std::uint64_t done);
+    // Plant files (session_plants.cpp): removes one plant's, best effort; and
+    // those of plants not in plants_, returned relative to dir_, sorted.
+    void remove_plant_files(const std::string& id) const;
+    std::vector<std::string> remove_unowned_plant_files() const;
     void breed_locked(const std::vector<std::string>& parents, double strength);
     void undo_locked();
     void redo_locked();
@@ -147,6 +161,7 @@ private:
     std::vector<BreedStep> steps_;  // steps_[cursor_] is the grid shown
     std::size_t cursor_ = 0;
     std::uint64_t choices_ = 0;
+    std::vector<std::string> removed_on_resume_;
     std::unique_ptr<RunLock> lock_;  // one writer per session directory, for the session's life
     std::unique_ptr<AppendFile> choices_file_;
     mutable std::mutex mutex_;

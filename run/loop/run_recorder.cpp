@@ -123,14 +123,14 @@ void RunRecorder::checkpoint() {
     state.lineage_bytes = session_.lineage.size();
     state.lineage_hash = session_.lineage.hash_hex();
     state.elapsed_s = elapsed_s();
-    RunSession& s = session_;
+    RunSession& session = session_;
     checkpoint_ticket_ =
-        io_.post([&s, bytes = checkpoint_bytes(state), archive = state.search->archive_text()] {
-            s.history.sync();
-            s.lineage.sync();
+        io_.post([&session, bytes = checkpoint_bytes(state), archive = state.search->archive_text()] {
+            session.history.sync();
+            session.lineage.sync();
             // archive.csv first: a checkpoint never refers to an older archive.csv.
-            if (!archive.empty()) write_file_atomically(s.paths.archive, archive);
-            write_file_atomically(s.paths.checkpoint, bytes);
+            if (!archive.empty()) write_file_atomically(session.paths.archive, archive);
+            write_file_atomically(session.paths.checkpoint, bytes);
         });
 }
 

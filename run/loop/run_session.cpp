@@ -28,13 +28,13 @@ SessionEvaluator local_evaluator(const RunSession& session, GrowthProblem& probl
 }
 
 namespace {
-void log_start(const RunSession& s, const RunSearch& search, const SessionEvaluator& scoring,
+void log_start(const RunSession& session, const RunSearch& search, const SessionEvaluator& scoring,
                const BirthSchedule& schedule) {
-    const ExperimentConfig& config = s.config;
+    const ExperimentConfig& config = session.config;
     const GenomeEvaluator& evaluator = *scoring.evaluator;
-    auto& log = s.log.both;
+    auto& log = session.log.both;
     log->info("run directory {}: population {}, generation {}/{} ({} births done), {}, {}, seed {}",
-              s.paths.dir.string(), config.evolution.population, search.completed_generations(),
+              session.paths.dir.string(), config.evolution.population, search.completed_generations(),
               config.run.generations, search.births(),
               scoring.remote ? "scored over MPI" : evaluator.description(), schedule.describe(), config.run.seed);
     if (scoring.remote) log->info("genomes are grown and scored by {}", evaluator.description());
@@ -44,14 +44,14 @@ void log_start(const RunSession& s, const RunSearch& search, const SessionEvalua
                   schedule.width, evaluator.capacity());
 }
 
-void log_end(const RunSession& s, const RunSearch& search, const SessionEvaluator& scoring) {
+void log_end(const RunSession& session, const RunSearch& search, const SessionEvaluator& scoring) {
     if (scoring.remote && !scoring.evaluator->summary().empty())
-        s.log.file_only->info("{}", scoring.evaluator->summary());
+        session.log.file_only->info("{}", scoring.evaluator->summary());
     if (const std::optional<Individual>& best = search.best())
-        s.log.both->info("done: generation {} reached; best fitness {} (individual {})", s.config.run.generations,
-                         format_number(best->fitness), best->id);
+        session.log.both->info("done: generation {} reached; best fitness {} (individual {})",
+                               session.config.run.generations, format_number(best->fitness), best->id);
     else
-        s.log.both->info("done: generation {} reached; no valid individual", s.config.run.generations);
+        session.log.both->info("done: generation {} reached; no valid individual", session.config.run.generations);
 }
 
 std::optional<double> best_fitness(const RunSearch& search) {
@@ -59,16 +59,16 @@ std::optional<double> best_fitness(const RunSearch& search) {
     return best ? std::optional<double>(best->fitness) : std::nullopt;
 }
 
-int run_loop(RunSession& s, GrowthProblem& problem, RunSearch& search, SessionEvaluator& scoring) {
-    const ExperimentConfig& config = s.config;
+int run_loop(RunSession& session, GrowthProblem& problem, RunSearch& search, SessionEvaluator& scoring) {
+    const ExperimentConfig& config = session.config;
     const std::uint64_t target_births = (config.run.generations + 1) * static_cast<std::uint64_t>(config.evolution.population);
     const BirthSchedule schedule = birth_schedule(config.evolution);
-    log_start(s, search, scoring, schedule);
+    log_start(session, search, scoring, schedule);
 
-    Progress progress(s.log.both, s.log.file_only, target_births, config.run.generations);
-    BirthPipeline pipeline(schedule, search.breeder(), *scoring.evaluator, std::move(s.state.pending));
+    Progress progress(session.log.both, session.log.file_only, target_births, config.run.generations);
+    BirthPipeline pipeline(schedule, search.breeder(), *scoring.evaluator, std::move(session.state.pending));
     // After the pipeline, so its writes finish before the pipeline abandons what is in flight.
-    RunRecorder recorder(s, problem, search, pipeline, progress);
+    RunRecorder recorder(session, problem, search, pipeline, progress);
     const auto on_insert = [&recorder](const Individual& child, const std::string& error, const Inserted& what,
                                        const std::string& kept) { recorder.inserted(child, error, what, kept); };
 
@@ -77,25 +77,26 @@ int run_loop(RunSession& s, GrowthProblem& problem, RunSearch& search, SessionEv
         recorder.checkpoint();
         recorder.drain();
         progress.clear();
-        s.log.both->warn("stopped by signal {} after {} births; checkpoint saved. Continue with: morphogen resume {}",
-                         StopSignals::signal_number(), search.births(), s.paths.dir.string());
+        session.log.both->warn(
+            "stopped by signal {} after {} births; checkpoint saved. Continue with: morphogen resume {}",
+            StopSignals::signal_number(), search.births(), session.paths.dir.string());
         return exit_code::interrupted;
     }
     recorder.drain();
     progress.clear();
-    log_end(s, search, scoring);
+    log_end(session, search, scoring);
     return exit_code::ok;
 }
 
 }  // namespace
 
-int run_session(RunSession& s, GrowthProblem& problem, SessionEvaluator& evaluator) {
+int run_session(RunSession& session, GrowthProblem& problem, SessionEvaluator& evaluator) {
     try {
-        const std::unique_ptr<RunSearch> search = s.state.search->start(s.config, problem);
-        return run_loop(s, problem, *search, evaluator);
+        const std::unique_ptr<RunSearch> search = session.state.search->start(session.config, problem);
+        return run_loop(session, problem, *search, evaluator);
     } catch (const IoError& e) {
         throw IoError(std::string(e.what()) + " (the last checkpoint is intact: free space or fix the file, then " +
-                      "continue with morphogen resume " + s.paths.dir.string() + ")");
+                      "continue with morphogen resume " + session.paths.dir.string() + ")");
     }
 }
 

@@ -23,20 +23,20 @@ namespace {
 constexpr const char* format_name = "morphogen-checkpoint";
 constexpr const char* genome_encoding = "f64le";
 
-json content_of(const RunState& s, GenomeBlobWriter* genomes) {
-    if (!s.search) throw std::logic_error("a checkpoint needs the search's state");
+json content_of(const RunState& state, GenomeBlobWriter* genomes) {
+    if (!state.search) throw std::logic_error("a checkpoint needs the search's state");
     json history = json::array();
-    for (const HistoryRow& row : s.history) history.push_back(history_row_to_json(row));
-    json content{{"config", s.config},
-                 {"seed", s.seed},
+    for (const HistoryRow& row : state.history) history.push_back(history_row_to_json(row));
+    json content{{"config", state.config},
+                 {"seed", state.seed},
                  {"history", std::move(history)},
-                 {"lineage", {{"bytes", s.lineage_bytes}, {"hash", s.lineage_hash}}},
-                 {"elapsed_s", s.elapsed_s}};
+                 {"lineage", {{"bytes", state.lineage_bytes}, {"hash", state.lineage_hash}}},
+                 {"elapsed_s", state.elapsed_s}};
     // The search's genomes before the pending births': the binary part's order.
-    content[s.search->key()] = s.search->to_json(genomes);
-    if (!s.pending.empty()) {
+    content[state.search->key()] = state.search->to_json(genomes);
+    if (!state.pending.empty()) {
         json pending = json::array();
-        for (const Individual& child : s.pending) pending.push_back(individual_to_json(child, genomes));
+        for (const Individual& child : state.pending) pending.push_back(individual_to_json(child, genomes));
         content["pending"] = std::move(pending);
     }
     return content;
@@ -91,11 +91,11 @@ std::string sealed_format2(const json& content, std::string_view genomes, std::u
 }
 
 // Genomes a state holds (its members and best, and the pending births), for reserving.
-std::size_t genome_doubles(const RunState& s) {
-    if (!s.search) return 0;
-    const SearchView v = s.search->view();
+std::size_t genome_doubles(const RunState& state) {
+    if (!state.search) return 0;
+    const SearchView v = state.search->view();
     const std::size_t D = *v.best ? (*v.best)->params.size() : (v.members.empty() ? 0 : v.members.front()->params.size());
-    return (v.members.size() + 1 + s.pending.size()) * D;
+    return (v.members.size() + 1 + state.pending.size()) * D;
 }
 
 // A verified envelope: the content as stored and, from format 2, the binary part
@@ -336,7 +336,6 @@ RunState load_checkpoint(const std::filesystem::path& path) {
         state.seed = content.at("seed").get<std::uint64_t>();
         const ExperimentConfig config = stored_config(stored, refuse);
         state.config = config.resolved;
-        if (config.run.seed != state.seed) throw refuse("its seed differs from its config's run.seed");
         const std::size_t dimension = parameter_count(config.network.layers());
         if (content.size() != (content.contains("pending") ? 7u : 6u)) throw refuse("unexpected keys in its content");
         // From format 2 the genomes come from the binary part, never through JSON numbers.

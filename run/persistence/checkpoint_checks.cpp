@@ -32,16 +32,16 @@ bool same(const Individual& a, const Individual& b) {
            (a.fitness == b.fitness || (!a.valid() && !b.valid())) && a.size == b.size;
 }
 
-SearchView view_of(const RunState& s) {
-    if (!s.search) throw std::logic_error("a checkpoint's content needs the search's state");
-    return s.search->view();
+SearchView view_of(const RunState& state) {
+    if (!state.search) throw std::logic_error("a checkpoint's content needs the search's state");
+    return state.search->view();
 }
 
-void check_history(const RunState& s, std::uint64_t P) {
-    const SearchView v = view_of(s);
+void check_history(const RunState& state, std::uint64_t P) {
+    const SearchView v = view_of(state);
     double previous_elapsed = 0.0;
-    for (std::size_t g = 0; g < s.history.size(); ++g) {
-        const HistoryRow& row = s.history[g];
+    for (std::size_t g = 0; g < state.history.size(); ++g) {
+        const HistoryRow& row = state.history[g];
         const std::string where = at("history", g);
         if (row.births != (g + 1) * P)
             contradiction(where + ".births is " + std::to_string(row.births) + ", generation " + std::to_string(g) +
@@ -57,8 +57,8 @@ void check_history(const RunState& s, std::uint64_t P) {
                 contradiction(where + ": worst, median and best are not in order");
             if (!(*row.mean_vertices >= 0)) contradiction(where + ".mean_vertices is negative");
             if (!*v.best || *row.best > (*v.best)->fitness)
-                contradiction(where + ".best is better than the best individual ever born (" + std::string(s.search->key()) +
-                              ".best)");
+                contradiction(where + ".best is better than the best individual ever born (" +
+                              std::string(state.search->key()) + ".best)");
         }
         if (!std::isfinite(row.births_per_s) || row.births_per_s < 0)
             contradiction(where + ".births_per_s is " + format_number(row.births_per_s) + ", not a rate >= 0");
@@ -67,8 +67,8 @@ void check_history(const RunState& s, std::uint64_t P) {
                           ", negative or before the previous row's");
         previous_elapsed = row.elapsed_s;
     }
-    if (previous_elapsed > s.elapsed_s)
-        contradiction("elapsed_s is " + format_number(s.elapsed_s) + ", before the last history row's " +
+    if (previous_elapsed > state.elapsed_s)
+        contradiction("elapsed_s is " + format_number(state.elapsed_s) + ", before the last history row's " +
                       format_number(previous_elapsed));
 }
 
@@ -170,13 +170,13 @@ std::uint64_t invalid_between(const std::vector<LineageRow>& rows, std::uint64_t
 
 // The checkpoint is taken at a generation's end, so its last history row
 // summarises the population (or the archive) it holds.
-void check_last_row(const RunState& s, const ExperimentConfig& config, std::uint64_t P) {
-    if (s.history.empty() || s.births() != s.history.size() * P) return;
-    const std::size_t g = s.history.size() - 1;
-    const HistoryRow& row = s.history[g];
+void check_last_row(const RunState& state, const ExperimentConfig& config, std::uint64_t P) {
+    if (state.history.empty() || state.births() != state.history.size() * P) return;
+    const std::size_t g = state.history.size() - 1;
+    const HistoryRow& row = state.history[g];
     HistoryRow expected;
-    s.search->fill(expected, config);
-    const std::string source = view_of(s).members_source;
+    state.search->fill(expected, config);
+    const std::string source = view_of(state).members_source;
     check_row_stats(row, g, {expected.best, expected.mean, expected.median, expected.worst, expected.mean_vertices},
                     true, source);
     if (expected.qd && (row.coverage != expected.coverage || row.qd_score != expected.qd_score))
@@ -222,15 +222,15 @@ BirthReplay birth_replay(const ExperimentConfig& config) {
 // The pending births are exactly those the run's schedule keeps (births
 // conceived from an earlier state), unevaluated, with parents that existed in
 // the state each was conceived from.
-void check_pending(const RunState& s, const ExperimentConfig& config, std::uint64_t births) {
+void check_pending(const RunState& state, const ExperimentConfig& config, std::uint64_t births) {
     const BirthSchedule schedule = birth_schedule(config.evolution);
     const std::uint64_t begin = schedule.kept_begin(births), end = schedule.kept_end(births);
-    if (s.pending.size() != end - begin)
-        contradiction("pending holds " + std::to_string(s.pending.size()) + " births, but after " +
+    if (state.pending.size() != end - begin)
+        contradiction("pending holds " + std::to_string(state.pending.size()) + " births, but after " +
                       std::to_string(births) + " births the schedule (" + schedule.describe() + ") keeps " +
                       std::to_string(end - begin));
-    for (std::size_t i = 0; i < s.pending.size(); ++i) {
-        const Individual& child = s.pending[i];
+    for (std::size_t i = 0; i < state.pending.size(); ++i) {
+        const Individual& child = state.pending[i];
         const std::string where = at("pending", i);
         if (child.id != begin + i)
             contradiction(where + " is birth " + std::to_string(child.id) + ", expected " + std::to_string(begin + i));
@@ -242,20 +242,22 @@ void check_pending(const RunState& s, const ExperimentConfig& config, std::uint6
     }
 }
 
-void check_checkpoint_content(const RunState& s, const ExperimentConfig& config) {
+void check_checkpoint_content(const RunState& state, const ExperimentConfig& config) {
     const auto P = static_cast<std::uint64_t>(config.evolution.population);
-    const SearchView v = view_of(s);
-    const std::string name = s.search->key();
+    const SearchView v = view_of(state);
+    const std::string name = state.search->key();
     const std::uint64_t births = v.births;
-    if (!std::isfinite(s.elapsed_s) || s.elapsed_s < 0)
-        contradiction("elapsed_s is " + format_number(s.elapsed_s) + ", not a duration >= 0");
+    if (!std::isfinite(state.elapsed_s) || state.elapsed_s < 0)
+        contradiction("elapsed_s is " + format_number(state.elapsed_s) + ", not a duration >= 0");
     if (births > (config.run.generations + 1) * P)
         contradiction(name + ".births is " + std::to_string(births) + ", beyond the " +
                       std::to_string((config.run.generations + 1) * P) + " births of its run.generations " +
                       std::to_string(config.run.generations));
-    if (s.lineage_bytes < std::string_view(lineage_header).size())
-        contradiction("lineage.bytes is " + std::to_string(s.lineage_bytes) + ", shorter than lineage.csv's header");
-    if (s.lineage_hash.size() != 16 || s.lineage_hash.find_first_not_of("0123456789abcdef") != std::string::npos)
+    if (state.lineage_bytes < std::string_view(lineage_header).size())
+        contradiction("lineage.bytes is " + std::to_string(state.lineage_bytes) +
+                      ", shorter than lineage.csv's header");
+    if (state.lineage_hash.size() != 16 ||
+        state.lineage_hash.find_first_not_of("0123456789abcdef") != std::string::npos)
         contradiction("lineage.hash is not 16 lower-case hex digits");
 
     const std::optional<Individual>& best = *v.best;
@@ -275,18 +277,18 @@ void check_checkpoint_content(const RunState& s, const ExperimentConfig& config)
             contradiction(where + " has " + name + ".best's id " + std::to_string(member.id) + " but differs from it");
     }
     if (any_valid && !best) contradiction(name + ".best is null though the population has valid members");
-    for (const HistoryRow& row : s.history)
+    for (const HistoryRow& row : state.history)
         if (row.new_cells > P || row.coverage > 1.0)
             contradiction("history: new_cells or coverage out of range in generation " + std::to_string(row.generation));
-    check_history(s, P);
-    check_last_row(s, config, P);
-    check_pending(s, config, births);
+    check_history(state, P);
+    check_last_row(state, config, P);
+    check_pending(state, config, births);
 }
 
-void check_checkpoint_against_lineage(const RunState& s, std::string_view lineage, std::uint64_t P,
+void check_checkpoint_against_lineage(const RunState& state, std::string_view lineage, std::uint64_t P,
                                       std::string_view header, const BirthReplay* pending_parents) {
-    const SearchView v = view_of(s);
-    const std::string name = s.search->key();
+    const SearchView v = view_of(state);
+    const std::string name = state.search->key();
     const std::optional<Individual>& best = *v.best;
     const std::vector<LineageRow> rows = parse_lineage(lineage, v.births, name, header);
     for (std::size_t i = 0; i < v.members.size(); ++i) check_recorded(*v.members[i], rows, at(v.members_name.c_str(), i));
@@ -301,18 +303,19 @@ void check_checkpoint_against_lineage(const RunState& s, std::string_view lineag
     } else if (first_best != nullptr) {
         contradiction(name + ".best is null but lineage.csv records valid birth " + std::to_string(first_best->id));
     }
-    for (std::size_t g = 0; g < s.history.size(); ++g) {
+    for (std::size_t g = 0; g < state.history.size(); ++g) {
         const std::uint64_t invalid = invalid_between(rows, g * P, (g + 1) * P);
-        if (s.history[g].invalid != invalid)
-            contradiction(at("history", g) + ".invalid is " + std::to_string(s.history[g].invalid) +
+        if (state.history[g].invalid != invalid)
+            contradiction(at("history", g) + ".invalid is " + std::to_string(state.history[g].invalid) +
                           ", lineage.csv records " + std::to_string(invalid) + " invalid births in generation " +
                           std::to_string(g));
     }
     const std::vector<RecordedBirth> recorded = recorded_births(rows);
-    s.search->check_history(s.history, recorded, P);
+    state.search->check_history(state.history, recorded, P);
     if (pending_parents != nullptr)
-        s.search->check_pending_parents(s.pending, recorded, *pending_parents, birth_schedule(pending_parents->params));
-    const std::uint64_t current = s.history.size() * P;
+        state.search->check_pending_parents(state.pending, recorded, *pending_parents,
+                                            birth_schedule(pending_parents->params));
+    const std::uint64_t current = state.history.size() * P;
     if (v.invalid_in_generation != invalid_between(rows, current, v.births))
         contradiction(name + ".invalid_in_generation is " + std::to_string(v.invalid_in_generation) +
                       ", lineage.csv records " + std::to_string(invalid_between(rows, current, v.births)));
