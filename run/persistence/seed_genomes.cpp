@@ -24,12 +24,6 @@ using nlohmann::json;
 namespace {
 constexpr std::string_view kGenomeSuffix = ".genome.json";
 
-std::string show_layers(const std::vector<int>& layers) {
-    std::string text = "[";
-    for (std::size_t i = 0; i < layers.size(); ++i) text += (i ? ", " : "") + std::to_string(layers[i]);
-    return text + "]";
-}
-
 // A run directory's best (GA) or elites (MAP-Elites), from its checkpoint.
 void read_run_dir(const fs::path& dir, const std::vector<int>& layers, std::vector<GivenGenome>& out) {
     const fs::path config_file = dir / "config.json";
