@@ -119,7 +119,13 @@ TEST_CASE("evolve --from a run directory takes a GA run's best and a MAP-Elites 
     elites -= 1;  // header
     REQUIRE(elites >= 2);
     write_text(tmp.path / "me40.json", seeded_me_config(40));
-    REQUIRE(run_morphogen(evolve(tmp.path / "me40.json", tmp.path / "seeded", "--from " + q(tmp.path / "me"))).code == 0);
+    REQUIRE(run_morphogen(evolve(tmp.path / "me40.json", tmp.path / "seeded", "--threads 2 --from " + q(tmp.path / "me")))
+                .code == 0);
+    REQUIRE(run_morphogen(evolve(tmp.path / "me40.json", tmp.path / "seeded1",
+                                 "--threads 1 --from " + q(tmp.path / "me")))
+                .code == 0);
+    check_same_results(tmp.path / "seeded", tmp.path / "seeded1");  // a seeded MAP-Elites run, 1 and 2 threads
+    CHECK(read_text(tmp.path / "seeded" / "archive.csv") == read_text(tmp.path / "seeded1" / "archive.csv"));
     const nlohmann::json m = manifest(tmp.path / "seeded");
     REQUIRE(m["seeds"].size() == elites);
     CHECK(m["seeds"][1]["origin"] == (tmp.path / "me").string() + " (elite 1)");
