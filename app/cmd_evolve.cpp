@@ -3,10 +3,12 @@
 #include "app/commands.hpp"
 #include "app/resource_options.hpp"
 #include "core/base/atomic_file.hpp"
+#include "core/base/errors.hpp"
 #include "report/end_of_run.hpp"
 #include "run/loop/run_session.hpp"
 #include "run/exit_codes.hpp"
 #include "run/loop/run_records.hpp"
+#include "run/persistence/seed_genomes.hpp"
 #include "run/searches/run_search.hpp"
 #include "run/loop/stop_signals.hpp"
 #include "core/base/parallel_for.hpp"
@@ -20,6 +22,7 @@ namespace morphogen {
 namespace {
 struct EvolveOptions {
     std::string config, out;
+    std::vector<std::string> from;
     std::uint64_t seed = 0, generations = 0;
     int threads = 0;
     bool force = false, no_report = false;
@@ -37,6 +40,16 @@ int run_evolve(const EvolveOptions& o) {
     ExperimentConfig config = load_experiment_config(o.config, overrides);  // every problem, before anything else
     check_resource_limits(config, evolution_workload(config), o.resources.limits(), o.config);
     GrowthProblem problem(config);  // a bad seed mesh file fails here, before the directory exists
+    // --from adds to run.from; the genomes are read (and their shapes checked) before the directory exists.
+    if (!o.from.empty()) {
+        config.run.from.insert(config.run.from.end(), o.from.begin(), o.from.end());
+        config.resolved["run"]["from"] = config.run.from;
+    }
+    const std::vector<GivenGenome> given = read_given_genomes(config.run.from, config.network.layers());
+    if (given.size() > static_cast<std::size_t>(config.evolution.population))
+        throw ConfigError("run.from and --from name " + std::to_string(given.size()) +
+                          " genomes, more than generation 0 holds (evolution.population " +
+                          std::to_string(config.evolution.population) + ")");
 
     const RunPaths paths =
         run_paths(o.out.empty() ? default_run_dir(config.run.name, std::chrono::system_clock::now())
@@ -52,6 +65,11 @@ int run_evolve(const EvolveOptions& o) {
     create_run_dir(paths, o.force);
     RunLock lock(paths.dir);
     clear_run_files(paths);
+    if (!given.empty()) {
+        // The copies in RUN_DIR/seeds/ are what this run and every resume start from.
+        record_given_genomes(paths.dir, given, config.network.layers());
+        problem.set_seed_genomes(load_recorded_genomes(paths.dir, config.network.layers()));
+    }
     RunLoggers log = make_run_loggers(paths);
     if (restart)
         log.both->info("{} held a run stopped before its first checkpoint; starting it again", paths.dir.string());
@@ -95,6 +113,9 @@ void add_evolve_command(CLI::App& root, CommandRunner& selected, EvaluatorFactor
     options->seed_option = cmd->add_option("--seed", options->seed, "replaces run.seed");
     options->generations_option = cmd->add_option("--generations", options->generations, "replaces run.generations");
     options->threads_option = cmd->add_option("--threads", options->threads, "replaces run.threads (0 = all cores)");
+    cmd->add_option("--from", options->from,
+                    "start generation 0 from a genome file, a run directory (best, or MAP-Elites elites) or a breed "
+                    "session's exports; repeatable, adds to run.from");
     cmd->add_flag("--force", options->force, "reuse a non-empty run directory (removes its morphogen files)");
     cmd->add_flag("--no-report", options->no_report, "do not write RUN_DIR/report/ at the end (morphogen report)");
     add_resource_options(cmd, options->resources);

@@ -11,6 +11,7 @@
 #include "run/loop/run_session.hpp"
 #include "run/exit_codes.hpp"
 #include "run/loop/run_records.hpp"
+#include "run/persistence/seed_genomes.hpp"
 #include "run/searches/run_search.hpp"
 #include "run/loop/stop_signals.hpp"
 
@@ -106,6 +107,7 @@ int run_resume(const ResumeOptions& o) {
     // Check everything before changing anything.
     check_resource_limits(config, evolution_workload(config), o.resources.limits(), paths.config.string());
     GrowthProblem problem(config);
+    problem.set_seed_genomes(load_recorded_genomes(paths.dir, config.network.layers()));  // evolve --from's copies
     RunLoggers log = make_run_loggers(paths);
     if (StopSignals::requested()) {
         log.both->warn("stopped by signal {} before resuming; nothing changed. Continue with: morphogen resume {}",

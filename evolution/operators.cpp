@@ -61,7 +61,7 @@ bool insert_child(std::vector<Individual>& population, Individual child, std::si
 
 BirthRules birth_rules(const GaParams& params) {
     return {static_cast<std::uint64_t>(params.population), params.init_range, params.crossover, params.mutation_rate,
-            params.mutation_sigma, {}};
+            params.mutation_sigma, {}, {}};
 }
 
 void check_shared_params(const BirthRules& r, int batch, const std::string& search) {
@@ -81,7 +81,12 @@ Individual conceive_birth(const BirthRules& rules, std::span<const Block> blocks
     Individual child;
     child.id = birth;
     if (birth < rules.population || !pick) {
-        child.params = random_parameters(dimension, rules.init_range, stream, rules.centre);
+        if (rules.seeds.empty()) {
+            child.params = random_parameters(dimension, rules.init_range, stream, rules.centre);
+        } else {
+            child.params = rules.seeds[birth % rules.seeds.size()];
+            if (birth >= rules.seeds.size()) mutate(child.params, rules.mutation_rate, rules.mutation_sigma, stream);
+        }
         return child;
     }
     const Individual& first = pick(stream);
@@ -98,12 +103,14 @@ Individual conceive_birth(const BirthRules& rules, std::span<const Block> blocks
 }
 
 Individual conceive(std::span<const Individual> snapshot, const GaParams& params, std::span<const Block> blocks,
-                    std::size_t dimension, std::uint64_t seed, std::uint64_t birth, std::span<const double> centre) {
+                    std::size_t dimension, std::uint64_t seed, std::uint64_t birth, std::span<const double> centre,
+                    std::span<const std::vector<double>> seeds) {
     const ParentPicker pick = [&](RandomStream& stream) -> const Individual& {
         return snapshot[tournament(snapshot, params.tournament, stream)];
     };
     BirthRules rules = birth_rules(params);
     rules.centre = centre;
+    rules.seeds = seeds;
     return conceive_birth(rules, blocks, dimension, seed, birth, pick);
 }
 
@@ -112,6 +119,15 @@ std::vector<double> check_centre(std::vector<double> centre, std::size_t dimensi
         throw std::invalid_argument(search + " problem out of range: random centre of size " +
                                     std::to_string(centre.size()) + " for dimension " + std::to_string(dimension));
     return centre;
+}
+
+std::vector<std::vector<double>> check_seeds(std::vector<std::vector<double>> seeds, std::size_t dimension,
+                                             const std::string& search) {
+    for (const std::vector<double>& s : seeds)
+        if (s.size() != dimension)
+            throw std::invalid_argument(search + " problem out of range: a given genome of size " +
+                                        std::to_string(s.size()) + " for dimension " + std::to_string(dimension));
+    return seeds;
 }
 
 std::size_t batch_size(std::uint64_t births, std::uint64_t population, int batch) {

@@ -57,6 +57,9 @@ struct BirthRules {
     double mutation_rate = 0.0;    // per-parameter probability of a normal step
     double mutation_sigma = 0.0;   // standard deviation of that step
     std::span<const double> centre;  // random parameters are shifted by this (empty: by 0)
+    // Given genomes (evolve --from): generation 0's birth i is seeds[i] for
+    // i < seeds.size(), else a mutant of seeds[i % seeds.size()]. Empty: random.
+    std::span<const std::vector<double>> seeds;
 };
 BirthRules birth_rules(const GaParams& params);
 // Checks what every search shares (the birth rules and the batch size);
@@ -67,7 +70,8 @@ void check_shared_params(const BirthRules& rules, int batch, const std::string& 
 using ParentPicker = std::function<const Individual&(RandomStream& stream)>;
 
 // The birth `birth` (not yet evaluated), drawing only from RandomStream(seed,
-// birth): a random genome if birth < rules.population or `pick` is empty;
+// birth): a random genome (or a given one or its mutant, see
+// BirthRules::seeds) if birth < rules.population or `pick` is empty;
 // otherwise, in this order, parent 1 = pick, parent 2 = pick (drawn always,
 // used only on crossover), the crossover coin, the block coins (crossover
 // only), then mutation of every parameter.
@@ -77,10 +81,13 @@ Individual conceive_birth(const BirthRules& rules, std::span<const Block> blocks
 // The GA's birth: conceive_birth with parents chosen by tournament on `snapshot`.
 Individual conceive(std::span<const Individual> snapshot, const GaParams& params, std::span<const Block> blocks,
                     std::size_t dimension, std::uint64_t seed, std::uint64_t birth,
-                    std::span<const double> centre = {});
+                    std::span<const double> centre = {}, std::span<const std::vector<double>> seeds = {});
 // `centre` if it is empty or has `dimension` entries; throws
 // std::invalid_argument naming `search` otherwise.
 std::vector<double> check_centre(std::vector<double> centre, std::size_t dimension, const std::string& search);
+// The same for given genomes (Problem::seed_genomes): each `dimension` long.
+std::vector<std::vector<double>> check_seeds(std::vector<std::vector<double>> seeds, std::size_t dimension,
+                                             const std::string& search);
 
 // Births in the batch that starts at `births` done: at most `batch` and never
 // past the end of the current generation (a multiple of `population`).

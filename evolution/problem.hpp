@@ -20,6 +20,9 @@ public:
     // Where random genomes are centred (docs/algorithm.md §6.3): one value per
     // parameter, or empty for 0 everywhere.
     virtual std::vector<double> random_centre() const { return {}; }
+    // Genomes generation 0 starts from instead of random ones (BirthRules::seeds),
+    // each dimension() long; empty for a random start.
+    virtual std::vector<std::vector<double>> seed_genomes() const { return {}; }
     // Called before a batch with the number of workers that will call
     // evaluate(); lets the problem size per-worker scratch space.
     virtual void prepare(int workers) { (void)workers; }

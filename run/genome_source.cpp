@@ -7,13 +7,11 @@
 
 namespace morphogen {
 
-namespace {
 std::string show_layers(const std::vector<int>& layers) {
     std::string text = "[";
     for (std::size_t i = 0; i < layers.size(); ++i) text += (i ? ", " : "") + std::to_string(layers[i]);
     return text + "]";
 }
-}  // namespace
 
 Genome random_genome(const std::vector<int>& layers, GrowthMode mode, double init_range, std::uint64_t seed) {
     RandomStream stream(seed, 0);

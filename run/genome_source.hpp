@@ -14,6 +14,9 @@ namespace morphogen {
 // --random S`, gallery entry with seed S and birth 0 of a run with seed S agree.
 Genome random_genome(const std::vector<int>& layers, GrowthMode mode, double init_range, std::uint64_t seed);
 
+// "[12, 4, 4]": a network shape as the errors name it.
+std::string show_layers(const std::vector<int>& layers);
+
 // Loads a genome file and checks its layers match the config's (ConfigError
 // naming both if not).
 Genome load_genome_for(const std::vector<int>& layers, const std::string& path);

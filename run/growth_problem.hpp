@@ -25,6 +25,9 @@ public:
     std::vector<Block> blocks() const override;
     // Branching mode: shoots of random genomes start growing (docs/algorithm.md §6.3).
     std::vector<double> random_centre() const override;
+    // The genomes generation 0 starts from (seed_genomes.hpp); none by default.
+    std::vector<std::vector<double>> seed_genomes() const override { return seeds_; }
+    void set_seed_genomes(std::vector<std::vector<double>> seeds) { seeds_ = std::move(seeds); }
     void prepare(int workers) override;
     // Score = fitness of the grown mesh; size = its vertex count; when the
     // config has descriptors, descriptors = its measures of that same mesh.
@@ -58,6 +61,7 @@ private:
     bool keeps_exports_;  // run.export_every > 0 with plain GLBs: evaluate_keeping keeps files
     // One per worker; evaluate() with worker w touches only workspaces_[w].
     mutable std::vector<GrowthWorkspace> workspaces_;
+    std::vector<std::vector<double>> seeds_;
 };
 
 }  // namespace morphogen

@@ -24,10 +24,11 @@ SteadyStateGA::SteadyStateGA(const GaParams& params, std::uint64_t seed, Problem
     check_params(params_);
     blocks_ = check_blocks(problem_.blocks(), problem_.dimension());
     centre_ = check_centre(problem_.random_centre(), problem_.dimension(), "GA");
+    seeds_ = check_seeds(problem_.seed_genomes(), problem_.dimension(), "GA");
 }
 
 Individual SteadyStateGA::conceive(std::uint64_t birth) const {
-    return morphogen::conceive(state_.population, params_, blocks_, problem_.dimension(), seed_, birth, centre_);
+    return morphogen::conceive(state_.population, params_, blocks_, problem_.dimension(), seed_, birth, centre_, seeds_);
 }
 
 Inserted SteadyStateGA::insert(Individual& child, std::string&) {

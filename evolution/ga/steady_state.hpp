@@ -53,6 +53,7 @@ private:
     Problem& problem_;
     std::vector<Block> blocks_;
     std::vector<double> centre_;  // of random genomes (Problem::random_centre)
+    std::vector<std::vector<double>> seeds_;  // Problem::seed_genomes
     GaState state_;
 };
 

@@ -15,6 +15,7 @@ MapElites::MapElites(const MapElitesParams& params, std::uint64_t seed, Problem&
     check_shared_params(rules(), params_.batch, "MAP-Elites");
     blocks_ = check_blocks(problem_.blocks(), problem_.dimension());
     centre_ = check_centre(problem_.random_centre(), problem_.dimension(), "MAP-Elites");
+    seeds_ = check_seeds(problem_.seed_genomes(), problem_.dimension(), "MAP-Elites");
     if (params_.emitters.empty()) params_.emitters = default_emitters();
     per_generation_ = births_per_generation(params_.emitters, population());
     if (state_.emitters.empty()) state_.emitters = fresh_emitters(params_.emitters);

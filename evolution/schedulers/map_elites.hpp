@@ -73,7 +73,7 @@ public:
 private:
     BirthRules rules() const {
         return {population(), params_.init_range, params_.crossover, params_.mutation_rate, params_.mutation_sigma,
-                centre_};
+                centre_, seeds_};
     }
     // The emitter of a birth after generation 0, and whether `birth` is its
     // last one in its generation.
@@ -88,6 +88,7 @@ private:
     Problem& problem_;
     std::vector<Block> blocks_;
     std::vector<double> centre_;  // of random genomes (Problem::random_centre)
+    std::vector<std::vector<double>> seeds_;  // Problem::seed_genomes
     MapElitesState state_;
     std::vector<std::uint64_t> per_generation_;  // births of a generation for each emitter
     bool weighs_fitness_ = false;                // some emitter selects fitness-proportionally

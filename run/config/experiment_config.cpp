@@ -120,6 +120,17 @@ RunParams read_run_params(ObjectReader& reader) {
         reader.integer("export_every", static_cast<long long>(p.export_every), 0, 1'000'000'000));
     p.threads = static_cast<int>(reader.integer("threads", p.threads, 0, 4096));
     p.name = reader.string("name", p.name);
+    // Read only when given, so the resolved config of runs without it keeps its bytes.
+    if (const json* from = reader.raw("from"); from != nullptr) {
+        bool ok = from->is_array();
+        for (const json& source : ok ? *from : json::array()) ok = ok && source.is_string() && !source.get<std::string>().empty();
+        if (!ok)
+            reader.issues().add(reader.path_of("from"), "expected an array of non-empty paths (genome files, run "
+                                                         "directories or breed sessions), got " + from->dump());
+        else
+            p.from = from->get<std::vector<std::string>>();
+        reader.set_resolved("from", *from);
+    }
     if (const json* glb = reader.raw("export_glb"); glb != nullptr) {
         ObjectReader options(glb, reader.path_of("export_glb"), reader.issues());
         PlantExportOptions& o = p.export_glb.emplace();

@@ -20,6 +20,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace morphogen {
 
@@ -35,6 +36,10 @@ struct RunParams {
     // run.export_glb: the best of generation as an engine-ready GLB with
     // these options (docs/config.md); none: the plain GLB.
     std::optional<PlantExportOptions> export_glb;
+    // run.from: genome files, run directories or breed sessions whose genomes
+    // start generation 0 (seed_genomes.hpp); empty: random genomes. `evolve
+    // --from` appends to it. Read once, by evolve: a run keeps its copies.
+    std::vector<std::string> from;
 };
 
 struct ExperimentConfig {

@@ -138,6 +138,7 @@ bool is_stopped_start(const RunPaths& paths) {
                                      paths.dir / ".lock"};
     for (const auto& entry : fs::directory_iterator(paths.dir, ec)) {
         const fs::path& p = entry.path();
+        if (p == paths.dir / "seeds") continue;  // evolve --from's copies, written again by the next evolve
         if (p == paths.best) {
             if (!fs::is_directory(fs::symlink_status(p, ec)) || !fs::is_empty(p, ec)) return false;
             continue;
@@ -171,6 +172,8 @@ void clear_run_files(const RunPaths& paths) {
         remove_file(temporary_path(p));
     }
     std::error_code ec;
+    fs::remove_all(paths.dir / "seeds", ec);  // a run's given genomes (seed_genomes.hpp)
+    if (ec) fail(paths.dir / "seeds", "cannot remove", ec);
     if (fs::is_directory(paths.best, ec)) {
         for (const auto& entry : fs::directory_iterator(paths.best, ec))
             if (entry.path().filename().string().rfind("gen_", 0) == 0) remove_file(entry.path());

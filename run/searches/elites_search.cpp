@@ -124,7 +124,7 @@ void ElitesSearchState::check_replayed_parents(std::span<const Individual> pendi
     Archive archive = now.kind() == ArchiveKind::grid ? Archive::grid(now.ranges()) : Archive::cvt(now.ranges(), now.centroids());
     if (const std::optional<ThresholdParams> t = archive_thresholds(replay.emitters)) archive.keep_thresholds(*t);
     const BirthRules rules{P, replay.params.init_range, replay.params.crossover, replay.params.mutation_rate,
-                           replay.params.mutation_sigma, {}};
+                           replay.params.mutation_sigma, {}, {}};
     std::uint64_t done = 0;
     for (std::size_t i = 0; i < pending.size(); ++i) {
         const Individual& child = pending[i];
