@@ -1,6 +1,8 @@
 #include "breed/plant_growth.hpp"
 
+#include "engine/plant_colour.hpp"
 #include "fitness/measures.hpp"
+#include "run/exports/plant_exports.hpp"
 #include "fitness/mesh_stats.hpp"
 #include "core/growth/network/network.hpp"
 #include "core/io/mesh_io.hpp"
@@ -13,16 +15,19 @@
 
 namespace morphogen {
 
-PlantGrowth::PlantGrowth(const ExperimentConfig& config, const std::vector<std::string>& descriptors)
+PlantGrowth::PlantGrowth(const ExperimentConfig& config, const std::vector<std::string>& descriptors, bool colour)
     : grower_(config.network, config.growth),
       dimension_(parameter_count(grower_.layers())),
       fitness_(config.fitness),
-      descriptors_(descriptors, canopy_params_of(config.resolved.at("fitness"))) {}
+      descriptors_(descriptors, canopy_params_of(config.resolved.at("fitness"))),
+      colour_(colour) {}
 
 PlantOutcome PlantGrowth::grow(std::span<const double> params) const {
-    GrowthWorkspace workspace;
-    const GrowthState state = grower_.grow(params, workspace);
+    const DatedGrowth dated = grow_dated(grower_, params);  // the same state as grower_.grow
+    const GrowthState& state = dated.state;
     const MeshView mesh = state.mesh.view();
+    const std::vector<float> colours =
+        colour_ ? growth_colours(state, dated.birth_steps, grower_.params()) : std::vector<float>{};
     PlantOutcome out;
     const FitnessOutcome scored = fitness_->evaluate(mesh);
     if (scored.valid) out.fitness = scored.score;
@@ -39,10 +44,10 @@ PlantOutcome PlantGrowth::grow(std::span<const double> params) const {
     } catch (const std::invalid_argument&) {
         out.descriptors.clear();  // a degenerate plant: the search cannot place it
     }
-    out.glb = encode_mesh(mesh, MeshFormat::glb, {}, "plant.glb");
+    out.glb = encode_mesh(mesh, MeshFormat::glb, {.colours = colours}, "plant.glb");
     RenderOptions thumb;
     thumb.size = kThumbPixels;
-    out.thumb = render_mesh(mesh, thumb);
+    out.thumb = render_mesh(mesh, thumb, colours);
     return out;
 }
 

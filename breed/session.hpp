@@ -56,7 +56,8 @@ struct BreedStep {
 };
 
 struct BreedSessionOptions {
-    int threads = 0;  // threads that grow a grid's plants; 0: hardware concurrency
+    int threads = 0;     // threads that grow a grid's plants; 0: hardware concurrency
+    bool colour = true;  // the page's GLBs and thumbnails in colours from growth history
 };
 
 class BreedSession {

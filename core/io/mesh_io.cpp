@@ -86,7 +86,7 @@ std::string encode_mesh(MeshView mesh, MeshFormat format, const MeshWriteOptions
         case MeshFormat::ply: return ply_bytes(mesh, options);
         case MeshFormat::off: return off_bytes(mesh);
         case MeshFormat::stl: return stl_bytes(mesh);
-        case MeshFormat::glb: return glb_bytes(mesh, source);
+        case MeshFormat::glb: return glb_bytes(mesh, source, options.colours);
     }
     fail(source, "unknown mesh format");
 }
@@ -108,6 +108,14 @@ MeshArrays parse_mesh(std::string_view bytes, MeshFormat format, const std::stri
 MeshArrays read_mesh(const std::string& path) {
     const MeshFormat format = mesh_format_from_path(path);
     return parse_mesh(read_file(path), format, path);
+}
+
+ColouredMesh read_coloured_mesh(const std::string& path) {
+    if (mesh_format_from_path(path) != MeshFormat::glb) return {read_mesh(path), {}};
+    const std::string bytes = read_file(path);
+    ColouredMesh out;
+    out.mesh = read_glb(path, bytes, &out.colours);
+    return out;
 }
 
 }  // namespace morphogen
