@@ -90,7 +90,8 @@ int run_grow(const GrowOptions& options) {
     BirthSteps births(grower.seed().mesh.num_vertices());  // for --wind
     const StepObserver dating =
         options.plant.wind || options.plant.colour || options.plant.leaves ? births.observer() : StepObserver{};
-    const GrowthState state = animating ? grow_with_frames(grower, network, frames, workspace, recorded, dating)
+    const GrowthState state = animating ? grow_with_frames(grower, network, frames, workspace, recorded, dating,
+                                                                       options.plant.colour)
                                         : grower.grow(network, workspace, dating);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 

@@ -348,7 +348,7 @@ private:
 void animation_json(Reporter& r, const ExperimentConfig& config, const Individual& best) {
     int frames = r.options.animation_frames;
     std::string why;
-    if (const auto glb = report_animation_glb(config, Genome{config.network.layers(), best.params}, frames, why)) {
+    if (const auto glb = report_animation_glb(config, Genome{config.network.layers(), best.params}, frames, why, r.options.colour)) {
         write_out(r.out / "growth.glb", *glb);
         write_out(r.out / "growth.js", mesh_script("growth", *glb));
         r.data["animation"] = {{"script", "growth.js"}, {"file", "growth.glb"}, {"frames", frames}};
