@@ -97,7 +97,7 @@ TEST_CASE("smoothing refuses rounds outside 0..3 and attributes of the wrong len
     CHECK(none.mesh.faces == plant.state.mesh.faces());
 }
 
-TEST_CASE("--smooth: the GLB's LOD0 is the smoothed plant with its colours; the other levels are not",
+TEST_CASE("smooth: the GLB's LOD0 is the smoothed plant with its colours; the other levels are not",
           "[smooth][engine]") {
     const SmoothPlant plant = grow_for_smoothing(5, GrowthMode::branching);
     GrownPlant grown{.mesh = plant.state.mesh.view(), .birth_steps = plant.births, .steps = plant.state.steps_done};
