@@ -123,3 +123,29 @@ TEST_CASE("smooth: the GLB's LOD0 is the smoothed plant with its colours; the ot
 }
 
 }  // namespace morphogen
+
+namespace morphogen {
+
+TEST_CASE("grow_dated: one growth gives the step observer's state and birth steps", "[engine][colour][leaves]") {
+    for (const GrowthMode mode : {GrowthMode::paper, GrowthMode::branching})
+        for (std::uint64_t seed = 1; seed <= 8; ++seed) {
+            GrowthParams growth;
+            growth.steps = 80;
+            growth.mode = mode;
+            growth.collisions = Collisions::touch;  // the fail-safe: its state is the growth stopped early
+            const GenomeGrower grower(NetworkParams{}, growth);
+            const Network network(testing::random_test_genome(grower.layers(), seed));
+            BirthSteps observed(grower.seed().mesh.num_vertices());
+            GrowthWorkspace workspace;
+            const GrowthState twice = grower.grow(network, workspace, observed.observer());
+            std::vector<int> births;
+            const GrowthState once = grower.grow_dated(network, workspace, births);
+            INFO("seed " << seed);
+            CHECK(once.steps_done == twice.steps_done);
+            CHECK(once.mesh.positions() == twice.mesh.positions());
+            CHECK(once.mesh.faces() == twice.mesh.faces());
+            CHECK(births == observed.steps());
+        }
+}
+
+}  // namespace morphogen
