@@ -24,8 +24,7 @@ for seed in $(seq 1 "$n"); do
   p=$(printf '%s\n' "${plain[@]}" | median) c=$(printf '%s\n' "${extra[@]}" | median)
   vertices=$(sed -E 's/.*: ([0-9]+) vertices.*/\1/' "$work/p.txt")
   echo "$seed $vertices $grow_s $(echo "$c - $p" | bc -l)"
-done | awk '{printf "seed %2d: %4d vertices, growth %.4f s, colour+leaves %+.4f s (%.1f %%)\n", $1, $2, $3, $4, 100 * $4 / $3;
-             g[NR] = $3; d[NR] = $4} END {
-  n = asort(g); asort(d);
-  gm = (n % 2) ? g[(n + 1) / 2] : (g[n / 2] + g[n / 2 + 1]) / 2; dm = (n % 2) ? d[(n + 1) / 2] : (d[n / 2] + d[n / 2 + 1]) / 2;
-  printf "median of %d plants: growth %.4f s, colour+leaves %.4f s: %.1f %% of growth\n", n, gm, dm, 100 * dm / gm}'
+done >"$work/rows.txt"
+awk '{printf "seed %2d: %4d vertices, growth %.4f s, colour+leaves %+.4f s (%.1f %%)\n", $1, $2, $3, $4, 100 * $4 / $3}' "$work/rows.txt"
+g=$(awk '{print $3}' "$work/rows.txt" | median) d=$(awk '{print $4}' "$work/rows.txt" | median)
+awk -v g="$g" -v d="$d" -v n="$n" 'BEGIN {printf "median of %d plants: growth %.4f s, colour+leaves %.4f s: %.1f %% of growth\n", n, g, d, 100 * d / g}'
