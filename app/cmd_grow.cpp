@@ -100,9 +100,9 @@ int run_grow(const GrowOptions& options) {
     if (animating) birth_steps = births.steps();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    const std::vector<float> colours =
-        options.plant.colour ? growth_colours(state, birth_steps, config.growth) : std::vector<float>{};
     const std::vector<double> light = options.plant.leaves ? leaf_light(state, config.growth) : std::vector<double>{};
+    const std::vector<float> colours =  // the leaves' light is the final exposure: computed once
+        options.plant.colour ? growth_colours(state, birth_steps, config.growth, light) : std::vector<float>{};
     const MeshFormat format = mesh_format_from_path(options.output);
     if (options.plant.engine_ready() || (options.plant.colour && format == MeshFormat::glb)) {
         write_plant_glb(options.output,

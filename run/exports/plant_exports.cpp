@@ -36,11 +36,11 @@ void export_engine_plant(const GenomeGrower& grower, std::span<const double> par
                          const PlantExportOptions& options, const std::filesystem::path& stem) {
     const DatedGrowth grown = grow_dated(grower, params);
     GrownPlant plant = grown.plant();
-    const std::vector<float> colours =
-        options.colour ? growth_colours(grown.state, grown.birth_steps, grower.params()) : std::vector<float>{};
-    plant.colours = colours;
     const std::vector<double> light =
         options.leaves ? leaf_light(grown.state, grower.params()) : std::vector<double>{};
+    const std::vector<float> colours =  // the leaves' light is the final exposure: computed once
+        options.colour ? growth_colours(grown.state, grown.birth_steps, grower.params(), light) : std::vector<float>{};
+    plant.colours = colours;
     plant.light = light;
     write_plant_glb(stem.string() + ".glb", plant, record, options);
     write_mesh(grown.state.mesh.view(), stem.string() + ".obj");
