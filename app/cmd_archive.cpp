@@ -7,6 +7,7 @@
 #include "app/plant_export_options.hpp"
 #include "core/base/atomic_file.hpp"
 #include "core/base/errors.hpp"
+#include "engine/plant_colour.hpp"
 #include "report/render.hpp"
 #include "run/persistence/checkpoint.hpp"
 #include "run/searches/elites_search.hpp"
@@ -39,6 +40,7 @@ struct ArchiveOptions {
     std::string dir, out, png, pack;
     std::uint64_t top = 0;  // 0 = every elite
     int size = 96;          // pixels per map cell
+    bool no_colour = false; // the map's plants in plain green
     PlantExportOptions plant;
 };
 
@@ -75,7 +77,7 @@ void heat_colour(double t, std::uint8_t* p) {
 // the second (if any) along x; with a third, each (x, y) shows the fittest
 // elite over it. Plants are framed one by one (each fills its cell).
 void write_map(const Archive& archive, const std::vector<Elite>& elites, const GenomeGrower& grower, int size,
-               const std::string& path) {
+               bool colour, const std::string& path) {
     const auto& ranges = archive.ranges();
     const int rows = ranges[0].bins;
     const int cols = ranges.size() >= 2 ? ranges[1].bins : 1;
@@ -98,8 +100,10 @@ void write_map(const Archive& archive, const std::vector<Elite>& elites, const G
     options.size = size;
     for (const auto& [at, elite] : shown) {
         const int x0 = left + at.second * size, y0 = top + (rows - 1 - at.first) * size;
-        const GrowthState grown = grower.grow(elite->params);
-        const Image picture = render_mesh(grown.mesh.view(), options);
+        const DatedGrowth grown = grow_dated(grower, elite->params);
+        const std::vector<float> colours =
+            colour ? growth_colours(grown.state, grown.birth_steps, grower.params()) : std::vector<float>{};
+        const Image picture = render_mesh(grown.state.mesh.view(), options, colours);
         for (int y = 0; y < size; ++y)
             for (int x = 0; x < size; ++x) std::copy_n(picture.pixel(x, y), 3, image.pixel(x0 + x, y0 + y));
         const double t = hi > lo ? (elite->fitness - lo) / (hi - lo) : 1.0;
@@ -204,7 +208,7 @@ int run_archive(const ArchiveOptions& o) {
     std::cout << "wrote " << elites.size() << " of " << archive.occupied() << " elites to " << out.string()
               << " (species.csv)\n";
     if (!o.png.empty()) {
-        write_map(archive, elites, problem.grower(), o.size, o.png);
+        write_map(archive, elites, problem.grower(), o.size, !o.no_colour, o.png);
         std::cout << "wrote the map of elites to " << o.png << "\n";
     }
     return 0;
@@ -221,6 +225,8 @@ void add_archive_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--top", options->top, "only the N fittest elites (0 = all)");
     cmd->add_option("--png", options->png, "draw the map of elites (grid archives) to this PNG file");
     cmd->add_option("--size", options->size, "pixels per map cell")->check(CLI::Range(32, 512));
+    cmd->add_flag("--no-colour", options->no_colour,
+                  "draw the map's plants in plain green, not in colours from growth history");
     cmd->add_option("--pack", options->pack,
                     "Write a species pack to this new directory instead: plant_<id>.glb per species (with "
                     "--height/--lods/--wind), manifest.json and scatter.glb; MAP-Elites runs' elites or GA runs' "

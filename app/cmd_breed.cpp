@@ -44,6 +44,7 @@ struct BreedOptions {
     bool no_browser = false;
     std::optional<std::uint64_t> seed;
     int threads = 0;
+    bool no_colour = false;
 };
 
 // The genome files a --from names: a file itself, or a directory's
@@ -103,6 +104,7 @@ void open_browser(const std::string& address) {
 int run_breed(const BreedOptions& o) {
     BreedSessionOptions session_options;
     session_options.threads = o.threads;
+    session_options.colour = !o.no_colour;
     if (!o.replay.empty()) {
         const auto session = BreedSession::replay(o.replay, o.out, session_options);
         std::cout << "replayed " << o.replay << "/choices.jsonl into " << o.out << "\n";
@@ -167,6 +169,8 @@ void add_breed_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--bind", o->bind, "Address to listen on (anything but 127.0.0.1 gets a warning)")
         ->capture_default_str();
     cmd->add_flag("--no-browser", o->no_browser, "Do not open a browser");
+    cmd->add_flag("--no-colour", o->no_colour,
+                  "Draw the page's plants in plain green, not in colours from growth history");
     cmd->add_option("--seed", o->seed, "The session's seed (run.seed)");
     cmd->add_option("--threads", o->threads, "Threads that grow a grid (0: all cores)")->check(CLI::Range(0, 1024));
     auto* resume = cmd->add_option("--resume", o->resume, "Continue the session in this directory")

@@ -86,20 +86,26 @@ int run_grow(const GrowOptions& options) {
     const auto start = std::chrono::steady_clock::now();
     GrowthWorkspace workspace;
     GrowthFrames recorded;
-    BirthSteps births(grower.seed().mesh.num_vertices());  // for --wind
-    const StepObserver dating =
-        options.plant.wind || options.plant.colour || options.plant.leaves ? births.observer() : StepObserver{};
-    const GrowthState state = animating ? grow_with_frames(grower, network, frames, workspace, recorded, dating)
-                                        : grower.grow(network, workspace, dating);
+    // Birth steps for --wind, --colour and --leaves: dated by the one growth
+    // (grow_dated), or by the animation's step observer.
+    const bool dated = options.plant.wind || options.plant.colour || options.plant.leaves;
+    BirthSteps births(grower.seed().mesh.num_vertices());
+    std::vector<int> birth_steps;
+    const GrowthState state =
+        animating ? grow_with_frames(grower, network, frames, workspace, recorded,
+                                     dated ? births.observer() : StepObserver{}, options.plant.colour)
+        : dated   ? grower.grow_dated(network, workspace, birth_steps)
+                  : grower.grow(network, workspace);
+    if (animating) birth_steps = births.steps();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    const std::vector<float> colours =
-        options.plant.colour ? growth_colours(state, births.steps(), config.growth) : std::vector<float>{};
     const std::vector<double> light = options.plant.leaves ? leaf_light(state, config.growth) : std::vector<double>{};
+    const std::vector<float> colours =  // the leaves' light is the final exposure: computed once
+        options.plant.colour ? growth_colours(state, birth_steps, config.growth, light) : std::vector<float>{};
     const MeshFormat& format = mesh_format_from_path(options.output);
     if (options.plant.engine_ready() || (options.plant.colour && format.extension == ".glb")) {
         write_plant_glb(options.output,
-                        GrownPlant{.mesh = state.mesh.view(), .birth_steps = births.steps(), .steps = state.steps_done,
+                        GrownPlant{.mesh = state.mesh.view(), .birth_steps = birth_steps, .steps = state.steps_done,
                                    .colours = colours, .light = light},
                         grown_record(config, genome, state.mesh.view()), options.plant);
     }

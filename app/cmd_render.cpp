@@ -1,5 +1,6 @@
 // `morphogen render MESH... -o SHEET.png [--columns C] [--size PX] [--own-scale]`:
-// draws meshes (OBJ/PLY/OFF/STL/GLB) side by side on one PNG contact sheet.
+// draws meshes (OBJ/PLY/OFF/STL/GLB) side by side on one PNG contact sheet,
+// in a GLB's vertex colours (COLOR_0, `--colour` exports) unless --no-colour.
 #include "app/commands.hpp"
 #include "core/io/mesh_io.hpp"
 #include "report/render.hpp"
@@ -19,19 +20,23 @@ struct RenderArgs {
     std::string output;
     RenderOptions options;
     bool own_scale = false;
+    bool no_colour = false;
 };
 
 int run_render(const RenderArgs& args) {
     std::vector<MeshArrays> meshes;
+    std::vector<std::vector<float>> colours;
     std::vector<std::string> captions;
     meshes.reserve(args.meshes.size());
     for (const std::string& path : args.meshes) {
-        meshes.push_back(read_mesh(path));  // IoError names the file
+        ColouredMesh read = read_coloured_mesh(path);  // IoError names the file
+        meshes.push_back(std::move(read.mesh));
+        colours.push_back(args.no_colour ? std::vector<float>{} : std::move(read.colours));
         captions.push_back(std::filesystem::path(path).stem().string());
     }
     RenderOptions options = args.options;
     options.shared_scale = !args.own_scale;
-    render_contact_sheet(meshes, captions, args.output, options);
+    render_contact_sheet(meshes, captions, args.output, options, colours);
     std::cout << "wrote " << args.output << " (" << meshes.size() << " mesh" << (meshes.size() == 1 ? "" : "es")
               << ")\n";
     return exit_code::ok;
@@ -54,6 +59,8 @@ void add_render_command(CLI::App& root, CommandRunner& selected) {
         ->capture_default_str();
     cmd->add_flag("--own-scale", args->own_scale,
                   "Frame every mesh to fill its cell (sizes are then not comparable)");
+    cmd->add_flag("--no-colour", args->no_colour,
+                  "Draw every mesh in the plain green, not in a GLB's vertex colours (COLOR_0)");
     select_on_pick(cmd, selected, args, run_render);
 }
 

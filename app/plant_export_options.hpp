@@ -8,6 +8,7 @@
 //               (color, uv, godot; repeatable; needs --wind)
 //   --colour    COLOR_0 from growth history (engine/plant_colour.hpp)
 //   --leaves [--leaf-size F] [--leaf-density D]  foliage cards (engine/leaf_cards.hpp)
+//   --smooth N  LOD0 after N rounds of Loop subdivision (engine/plant_smooth.hpp)
 // Header-only: app/ holds at most 15 source files.
 #include "engine/plant_export.hpp"
 
@@ -41,6 +42,9 @@ inline void add_plant_export_options(CLI::App* command, PlantExportOptions& opti
     command->add_option("--leaf-density", options.leaf_density,
                         "With --leaves: the fraction of eligible vertices that carry a card, above 0 and at most 1 "
                         "(default 0.5; cards keep half a card's length apart)");
+    command->add_option("--smooth", options.smooth,
+                        "Engine-ready GLB whose LOD0 is smoothed by N rounds of Loop subdivision, 0 to 3 "
+                        "(4^N x its triangles; colours and wind data blend with it)");
     command
         ->add_option_function<std::vector<std::string>>(
             "--wind-preset",
@@ -71,7 +75,7 @@ inline void check_plant_export_options(const PlantExportOptions& options, const 
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     if (ext != ".glb") {
         const char* option = options.lods > 0 ? "--lods" : options.wind ? "--wind" : options.leaves ? "--leaves"
-                             : options.colour ? "--colour" : "--height";
+                             : options.smooth != 0 ? "--smooth" : options.colour ? "--colour" : "--height";
         throw CLI::ValidationError(std::string(option) + ": writes an engine-ready GLB, so the output must be .glb, not '" +
                                    glb_path + "'");
     }

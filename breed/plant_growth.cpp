@@ -1,7 +1,9 @@
 #include "breed/plant_growth.hpp"
 
 #include "core/base/parallel_for.hpp"
+#include "engine/plant_colour.hpp"
 #include "fitness/measures.hpp"
+#include "run/exports/plant_exports.hpp"
 #include "fitness/mesh_stats.hpp"
 #include "core/growth/network/network.hpp"
 #include "core/io/mesh_io.hpp"
@@ -12,16 +14,19 @@
 
 namespace morphogen {
 
-PlantGrowth::PlantGrowth(const ExperimentConfig& config, const std::vector<std::string>& descriptors)
+PlantGrowth::PlantGrowth(const ExperimentConfig& config, const std::vector<std::string>& descriptors, bool colour)
     : grower_(config.network, config.growth),
       dimension_(parameter_count(grower_.layers())),
       fitness_(config.fitness),
-      descriptors_(descriptors, config.fitness->canopy_params()) {}
+      descriptors_(descriptors, config.fitness->canopy_params()),
+      colour_(colour) {}
 
 PlantOutcome PlantGrowth::grow(std::span<const double> params) const {
-    GrowthWorkspace workspace;
-    const GrowthState state = grower_.grow(params, workspace);
+    const DatedGrowth dated = grow_dated(grower_, params);  // the same state as grower_.grow
+    const GrowthState& state = dated.state;
     const MeshView mesh = state.mesh.view();
+    const std::vector<float> colours =
+        colour_ ? growth_colours(state, dated.birth_steps, grower_.params()) : std::vector<float>{};
     PlantOutcome out;
     const FitnessOutcome scored = fitness_->evaluate(mesh);
     if (scored.valid) out.fitness = scored.score;
@@ -38,10 +43,10 @@ PlantOutcome PlantGrowth::grow(std::span<const double> params) const {
     } catch (const std::invalid_argument&) {
         out.descriptors.clear();  // a degenerate plant: the search cannot place it
     }
-    out.glb = encode_mesh(mesh, mesh_format(".glb"), {}, "plant.glb");
+    out.glb = encode_mesh(mesh, mesh_format(".glb"), {.colours = colours}, "plant.glb");
     RenderOptions thumb;
     thumb.size = kThumbPixels;
-    out.thumb = render_mesh(mesh, thumb);
+    out.thumb = render_mesh(mesh, thumb, colours);
     return out;
 }
 

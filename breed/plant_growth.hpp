@@ -24,14 +24,16 @@ struct PlantOutcome {
     std::optional<double> fitness;          // none when the fitness found it invalid
     std::map<std::string, double> measures;  // vertices, faces, height, width, area, and each descriptor
     std::vector<double> descriptors;        // the explore search's descriptors; empty when not measurable
-    std::string glb;                        // the plain GLB bytes
+    std::string glb;                        // the GLB bytes (with COLOR_0 where colour is on)
     Image thumb;                            // kThumbPixels square (report/render.hpp)
 };
 
 class PlantGrowth {
 public:
     // `descriptors`: the measures the explore search places plants by.
-    PlantGrowth(const ExperimentConfig& config, const std::vector<std::string>& descriptors);
+    // `colour`: the GLB carries COLOR_0 and the thumbnail draws it (colours
+    // from growth history, engine/plant_colour.hpp); scores do not change.
+    PlantGrowth(const ExperimentConfig& config, const std::vector<std::string>& descriptors, bool colour = true);
 
     const GenomeGrower& grower() const { return grower_; }
     std::size_t dimension() const { return dimension_; }
@@ -51,6 +53,7 @@ private:
     std::size_t dimension_;
     std::shared_ptr<const Fitness> fitness_;
     DescriptorSet descriptors_;
+    bool colour_;
 };
 
 }  // namespace morphogen

@@ -187,7 +187,7 @@ struct BreedServer::Impl {
         if (path == "/api/export")
             return post([this](const std::string& body_text) {
                 const json body = body_object(body_text);
-                allow_only(body, {"id", "height", "lods", "wind", "wind_presets"});
+                allow_only(body, {"id", "height", "lods", "wind", "wind_presets", "colour", "leaves"});
                 if (!body.contains("id") || !body.at("id").is_string())
                     throw bad_request("missing field \"id\" (a plant id)");
                 PlantExportOptions o;
@@ -197,6 +197,12 @@ struct BreedServer::Impl {
                     if (!body.at("wind").is_boolean()) throw bad_request("\"wind\" must be true or false");
                     o.wind = body.at("wind").get<bool>();
                 }
+                for (const auto& [field, flag] : {std::pair{"colour", &o.colour}, std::pair{"leaves", &o.leaves}})
+                    if (body.contains(field)) {
+                        if (!body.at(field).is_boolean())
+                            throw bad_request(std::string("\"") + field + "\" must be true or false");
+                        *flag = body.at(field).get<bool>();
+                    }
                 if (body.contains("wind_presets")) o.wind_presets = wind_presets_field(body.at("wind_presets"));
                 const auto [genome, mesh] = session.export_plant(body.at("id").get<std::string>(), o);
                 return json_reply({{"genome", genome}, {"mesh", mesh}});

@@ -31,7 +31,7 @@ BreedSession::BreedSession(fs::path dir, ExperimentConfig config, BreedSessionOp
           std::vector<std::string> names;
           for (const DescriptorRange& r : explore_settings_.descriptors) names.push_back(r.name);
           return names;
-      }()) {}
+      }(), options.colour) {}
 
 BreedSession::~BreedSession() {
     {

@@ -57,7 +57,8 @@ struct BreedStep {
 };
 
 struct BreedSessionOptions {
-    int threads = 0;  // threads that grow a grid's plants; 0: all cores (resolve_threads)
+    int threads = 0;     // threads that grow a grid's plants; 0: all cores (resolve_threads)
+    bool colour = true;  // the page's GLBs and thumbnails in colours from growth history
 };
 
 class BreedSession {

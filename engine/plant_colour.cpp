@@ -46,9 +46,9 @@ std::vector<float> colour_rgba(std::span<const Rgb> colours) {
 }
 
 std::vector<float> growth_colours(const GrowthState& state, std::span<const int> birth_steps,
-                                  const GrowthParams& params) {
-    std::vector<double> exposure;
-    if (params.mode == GrowthMode::branching)
+                                  const GrowthParams& params, std::span<const double> exposure_known) {
+    std::vector<double> exposure(exposure_known.begin(), exposure_known.end());
+    if (params.mode == GrowthMode::branching && exposure.size() != state.mesh.positions().size())
         exposure = final_exposure(state.mesh, ExposureParams{.cell = params.exposure_cell,
                                                              .depth = params.exposure_depth,
                                                              .full_shade = params.exposure_full_shade});

@@ -41,8 +41,10 @@ std::vector<float> colour_rgba(std::span<const Rgb> colours);
 // The colours of a grown plant as GrownPlant::colours takes them (RGBA):
 // §13 with the branching mode's growth state and final exposure, or the
 // paper mode's height, and the genome's tint.
+// `exposure`: final_exposure of this state where already computed (one per
+// vertex; leaf_light gives the same), else computed here.
 std::vector<float> growth_colours(const GrowthState& state, std::span<const int> birth_steps,
-                                  const GrowthParams& params);
+                                  const GrowthParams& params, std::span<const double> exposure = {});
 
 // For the branching mode: exposure of the final mesh with the growth's
 // exposure parameters (§5.9), computed here whether or not growth used it.

@@ -1,4 +1,5 @@
 #include "engine/plant_export.hpp"
+#include "engine/plant_smooth.hpp"
 
 #include "core/base/atomic_file.hpp"
 #include "core/base/errors.hpp"
@@ -58,11 +59,28 @@ std::string plant_export_problem(const PlantExportOptions& options) {
     if (!options.wind_presets.empty() && !options.wind)
         return "--wind-preset " + std::string(wind_preset_name(options.wind_presets.front())) +
                ": copies the wind data, so it needs --wind";
+    if (std::string problem = smooth_rounds_problem(options.smooth); !problem.empty()) return problem;
     if (options.colour && std::ranges::find(options.wind_presets, WindPreset::color) != options.wind_presets.end())
         return "--colour and --wind-preset color both write COLOR_0: use --wind-preset uv or godot with --colour "
                "(the wind data stays in _WIND)";
     return {};
 }
+
+namespace {
+
+// --smooth: LOD0 subdivided, its wind data and colours with it; the other
+// levels keep the grown mesh's simplifications.
+void smooth_first_level(EnginePlant& ready, int rounds) {
+    if (rounds == 0 || ready.levels.empty()) return;
+    const std::span<const float> carried[] = {ready.wind.front(), ready.colours.front()};
+    SmoothedMesh smooth = smooth_mesh(ready.levels.front().view(), rounds, carried);
+    ready.levels.front() = std::move(smooth.mesh);
+    ready.wind.front() = std::move(smooth.attributes[0]);
+    ready.colours.front() = std::move(smooth.attributes[1]);
+    ready.extras["smooth"] = rounds;
+}
+
+}  // namespace
 
 EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record, const PlantExportOptions& options) {
     if (const std::string problem = plant_export_problem(options); !problem.empty()) throw ConfigError(problem);
@@ -102,6 +120,7 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
         if (options.leaves) add_leaves(ready, cards, wind, options);
         ready.wind.push_back(std::move(wind));
         ready.colours.push_back(std::move(colours));
+        smooth_first_level(ready, options.smooth);
         return ready;
     }
     PlantLods lods = simplify_lods(placed.mesh.view(), options.lods);
@@ -132,6 +151,7 @@ EnginePlant make_engine_plant(const GrownPlant& plant, const PlantRecord& record
         else ready.colours.push_back(transfer_wind(placed.mesh.view(), colours, level.view()));
     }
     if (options.leaves) add_leaves(ready, cards, wind, options);
+    smooth_first_level(ready, options.smooth);
     return ready;
 }
 

@@ -27,6 +27,7 @@ struct PlantExportOptions {
     bool leaves = false;             // --leaves: foliage cards (engine/leaf_cards.hpp)
     std::optional<double> leaf_size{};     // --leaf-size: card length / plant height (needs leaves)
     std::optional<double> leaf_density{};  // --leaf-density: cards per eligible vertex (needs leaves)
+    int smooth = 0;                  // --smooth: LOD0 after this many rounds of Loop subdivision (plant_smooth.hpp)
 
     LeafParams leaf_params() const {
         return {.size = leaf_size.value_or(kDefaultLeafSize), .density = leaf_density.value_or(kDefaultLeafDensity)};
@@ -34,7 +35,7 @@ struct PlantExportOptions {
 
     // Whether any option asks for the engine-ready GLB rather than the plain one.
     // --colour alone is not: grow writes it into OBJ and PLY files as well.
-    bool engine_ready() const { return height_m.has_value() || lods > 0 || wind || leaves; }
+    bool engine_ready() const { return height_m.has_value() || lods > 0 || wind || leaves || smooth != 0; }
 };
 
 inline constexpr int kMaxPlantLods = 8;

@@ -5,6 +5,8 @@
 #include "core/base/errors.hpp"
 #include "core/io/gltf_mesh.hpp"
 #include "core/io/mesh_io.hpp"
+#include "engine/birth_steps.hpp"
+#include "engine/plant_colour.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -71,35 +73,49 @@ std::vector<int> animation_frame_steps(int steps, int frames) {
 }
 
 GrowthState grow_with_frames(const GenomeGrower& grower, const Network& network, int count,
-                             GrowthWorkspace& workspace, GrowthFrames& frames, const StepObserver& also) {
+                             GrowthWorkspace& workspace, GrowthFrames& frames, const StepObserver& also, bool colour) {
     const int steps = grower.params().steps;
     check_frames(count, steps);
     frames.steps = animation_frame_steps(steps, count);
     frames.meshes.clear();
+    frames.colours.clear();
     frames.meshes.reserve(frames.steps.size());
     if (frames.steps.front() == 0) frames.meshes.push_back(snapshot(grower.seed().mesh));  // start() keeps the seed's mesh
+    if (colour && !frames.meshes.empty()) frames.colours.emplace_back();  // the seed's: after growth, with its tint
     std::size_t next = frames.meshes.size();
+    BirthSteps births(grower.seed().mesh.num_vertices());
     const StepObserver take_frames = [&](const GrowthState& state, int t) {
         if (also) also(state, t);
+        if (colour) births.after_step(state, t);
         if (next < frames.steps.size() && frames.steps[next] == t + 1) {
             frames.meshes.push_back(snapshot(state.mesh));
+            if (colour) frames.colours.push_back(growth_colours(state, births.steps(), grower.params()));
             ++next;
         }
     };
     GrowthState state = grower.grow(network, workspace, take_frames);
+    if (colour && frames.steps.front() == 0) {
+        const std::vector<int> born(frames.meshes.front().positions.size(), 0);
+        frames.colours.front() = colour_rgba(plant_colours({.positions = frames.meshes.front().positions,
+                                                            .birth_steps = born,
+                                                            .steps = steps,
+                                                            .active = {},
+                                                            .exposure = {},
+                                                            .tint = genome_tint(state)}));
+    }
     if (frames.meshes.size() != frames.steps.size())  // grow() always does its params' steps
         throw std::logic_error("grow_with_frames: " + std::to_string(steps) + " steps asked, " +
                                std::to_string(state.steps_done) + " done");
     return state;
 }
 
-GrowthFrames record_growth_frames(const ExperimentConfig& config, const Genome& genome, int frames) {
+GrowthFrames record_growth_frames(const ExperimentConfig& config, const Genome& genome, int frames, bool colour) {
     check_frames(frames, config.growth.steps);
     const Network network(genome);
     const GenomeGrower grower(config.network, config.growth);
     GrowthWorkspace workspace;
     GrowthFrames out;
-    grow_with_frames(grower, network, frames, workspace, out);
+    grow_with_frames(grower, network, frames, workspace, out, {}, colour);
     return out;
 }
 
@@ -117,6 +133,7 @@ std::string encode_growth_animation_glb(const GrowthFrames& frames, double secon
     // Refuse before building what could not be written (or read back).
     long double bytes = 0;
     for (const MeshArrays& mesh : frames.meshes) bytes += gltf::mesh_data_bytes(mesh.view());
+    for (const std::vector<float>& colours : frames.colours) bytes += 4.0L * colours.size();  // COLOR_0
     bytes += (48.0L + 2048.0L) * n;  // per frame: 3 keys of 16 bytes, and its JSON (about 1.1 KB)
     if (bytes > kMaxMeshFileBytes)
         throw IoError(source + ": an animation of " + std::to_string(n) + " frames would hold " +
@@ -124,7 +141,11 @@ std::string encode_growth_animation_glb(const GrowthFrames& frames, double secon
                       std::to_string(kMaxMeshFileBytes) + " for mesh files; use fewer frames");
 
     tinygltf::Model model = gltf::new_model();
-    const int material = gltf::add_plant_material(model);
+    const bool coloured = !frames.colours.empty();
+    if (coloured && frames.colours.size() != frames.meshes.size())
+        throw ConfigError(source + ": " + std::to_string(frames.colours.size()) + " frames of colours for " +
+                          std::to_string(frames.meshes.size()) + " frames");
+    const int material = gltf::add_plant_material(model, coloured);
     tinygltf::Node root;
     root.name = "growth";
     model.nodes.push_back(root);
@@ -137,6 +158,8 @@ std::string encode_growth_animation_glb(const GrowthFrames& frames, double secon
         tinygltf::Node node;
         node.name = name;
         node.mesh = gltf::add_mesh(model, frames.meshes[static_cast<std::size_t>(i)].view(), material, name);
+        if (coloured && node.mesh >= 0)
+            gltf::add_vertex_attribute(model, node.mesh, "COLOR_0", 4, frames.colours[static_cast<std::size_t>(i)]);
         if (i + 1 < n) node.scale = {0.0, 0.0, 0.0};  // at rest only the final mesh shows
         const int index = static_cast<int>(model.nodes.size());
         model.nodes.push_back(node);

@@ -21,6 +21,9 @@ namespace morphogen {
 struct GrowthFrames {
     std::vector<MeshArrays> meshes;
     std::vector<int> steps;
+    // Empty, or per frame its colours from growth history (4 linear floats
+    // per vertex, engine/plant_colour.hpp): the animation's COLOR_0.
+    std::vector<std::vector<float>> colours;
 };
 
 inline constexpr int kDefaultAnimationFrames = 50;
@@ -44,19 +47,24 @@ std::vector<int> animation_frame_steps(int steps, int frames);
 // Grows `network` exactly as grower.grow(network, workspace) does (the same
 // final state, returned) while copying into `frames` the meshes after
 // animation_frame_steps(steps, count) of its steps, and calling `also` (when
-// set) after every step. Throws ConfigError for a bad `count`.
+// set) after every step; with `colour`, also each frame's colours (the
+// seed's by the paper mode's rule, §13, with the final tint). Throws
+// ConfigError for a bad `count`.
 GrowthState grow_with_frames(const GenomeGrower& grower, const Network& network, int count,
-                             GrowthWorkspace& workspace, GrowthFrames& frames, const StepObserver& also = {});
+                             GrowthWorkspace& workspace, GrowthFrames& frames, const StepObserver& also = {},
+                             bool colour = false);
 
 // Grows `genome` with config.network/config.growth and returns `frames` frames
-// (ConfigError when animation_frames_problem says no).
-GrowthFrames record_growth_frames(const ExperimentConfig& config, const Genome& genome, int frames);
+// (ConfigError when animation_frames_problem says no), coloured with `colour`.
+GrowthFrames record_growth_frames(const ExperimentConfig& config, const Genome& genome, int frames,
+                                  bool colour = false);
 
 // The animated glTF: node 0 is the root ("growth"), node i + 1 shows frame i
 // (mesh i, named "step_<steps[i]>"); frame i is shown from i * seconds_per_frame
 // for seconds_per_frame, the last one for max(seconds_per_frame,
 // kMinFinalFrameSeconds), and it is the one visible at rest (no animation
-// playing). Throws ConfigError for no frames, mismatched steps/meshes or
+// playing). Frames with colours carry COLOR_0 and the white material.
+// Throws ConfigError for no frames, mismatched steps/meshes or
 // seconds_per_frame outside [kMinSecondsPerFrame, kMaxSecondsPerFrame], and
 // IoError naming `source` if the file would pass kMaxMeshFileBytes.
 std::string encode_growth_animation_glb(const GrowthFrames& frames, double seconds_per_frame,

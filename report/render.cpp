@@ -3,6 +3,7 @@
 
 #include "core/base/errors.hpp"
 #include "core/base/parallel_for.hpp"
+#include "core/io/mesh_file_types.hpp"
 
 #include <Eigen/Geometry>
 
@@ -14,6 +15,7 @@
 #include <stb/stb_easy_font.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <exception>
@@ -181,8 +183,9 @@ struct SampleBuffer {
 };
 
 // Fills the triangle's samples that are nearer than what is there.
+// `corner`: the colours at a, b, c, interpolated; null: `colour` everywhere.
 void raster_triangle(SampleBuffer& buf, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                     const Eigen::Vector3d& c, const Rgb& colour) {
+                     const Eigen::Vector3d& c, const Rgb& colour, const std::array<Rgb, 3>* corner = nullptr) {
     const auto edge = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v, double x, double y) {
         return (v.x() - u.x()) * (y - u.y()) - (v.y() - u.y()) * (x - u.x());
     };
@@ -203,16 +206,32 @@ void raster_triangle(SampleBuffer& buf, const Eigen::Vector3d& a, const Eigen::V
             const std::size_t k = static_cast<std::size_t>(y) * buf.n + x;
             if (d < buf.depth[k]) {
                 buf.depth[k] = d;
-                buf.colour[k] = colour;
+                buf.colour[k] = corner ? Rgb(static_cast<float>(w0) * (*corner)[0] + static_cast<float>(w1) * (*corner)[1] +
+                                             static_cast<float>(w2) * (*corner)[2])
+                                       : colour;
             }
         }
 }
 
 Image downsample(const SampleBuffer& buf, const RenderOptions& o);
 
+// The vertex colours as the picture's (sRGB) colours; empty for none.
+std::vector<Rgb> picture_colours(MeshView mesh, std::span<const float> colours) {
+    if (colours.empty()) return {};
+    if (colours.size() != 4 * mesh.positions.size())
+        throw std::invalid_argument("render: " + std::to_string(colours.size()) + " colour values for " +
+                                    std::to_string(mesh.positions.size()) + " vertices (4 per vertex)");
+    std::vector<Rgb> out(mesh.positions.size());
+    for (std::size_t v = 0; v < out.size(); ++v)
+        for (int c = 0; c < 3; ++c)
+            out[v][c] = static_cast<float>(srgb_encode(std::clamp(static_cast<double>(colours[4 * v + c]), 0.0, 1.0)));
+    return out;
+}
+
 // Draws one mesh at frame `frame`, its xy centre `centre` at the cell's middle.
 Image render_framed(MeshView mesh, const Vec3& centre, const Frame& frame, const Camera& cam,
-                    const RenderOptions& o) {
+                    const RenderOptions& o, std::span<const float> vertex_colours) {
+    const std::vector<Rgb> colours = picture_colours(mesh, vertex_colours);
     const int s = o.supersample;
     SampleBuffer buf(o.size * s);
     // Screen position in samples (x right, y down) and depth along the view.
@@ -228,8 +247,13 @@ Image render_framed(MeshView mesh, const Vec3& centre, const Frame& frame, const
         const double len = n.norm();
         // Two-sided Lambert: |n.l|, so faces seen from inside are lit like outside.
         const double lambert = len > 0 ? std::abs(n.dot(cam.light)) / len : 0;
-        raster_triangle(buf, project(a), project(b), project(c),
-                        kPlant * (kAmbient + kDiffuse * static_cast<float>(lambert)));
+        const float light = kAmbient + kDiffuse * static_cast<float>(lambert);
+        if (colours.empty()) {
+            raster_triangle(buf, project(a), project(b), project(c), kPlant * light);
+        } else {
+            const std::array<Rgb, 3> corner{colours[f[0]] * light, colours[f[1]] * light, colours[f[2]] * light};
+            raster_triangle(buf, project(a), project(b), project(c), kPlant, &corner);
+        }
     }
 
     // Ground plate under what the mesh left uncovered: it is always behind a
@@ -332,18 +356,21 @@ int label_width(const std::string& text, int scale) { return text_width(text, sc
 
 int sheet_cell_height(int size) { return size + caption_height(size); }
 
-Image render_mesh(MeshView mesh, const RenderOptions& options) {
+Image render_mesh(MeshView mesh, const RenderOptions& options, std::span<const float> colours) {
     check_options(options);
     const Camera cam = make_camera(options);
     const Placement pl = place(mesh, cam);
-    return render_framed(mesh, pl.centre, fit(std::span(&pl, 1), options.size, cam), cam, options);
+    return render_framed(mesh, pl.centre, fit(std::span(&pl, 1), options.size, cam), cam, options, colours);
 }
 
 Image render_sheet(std::span<const MeshArrays> meshes, std::span<const std::string> captions,
-                   const RenderOptions& options) {
+                   const RenderOptions& options, std::span<const std::vector<float>> colours) {
     check_options(options);
     if (!captions.empty() && captions.size() != meshes.size())
         throw std::invalid_argument("render_sheet: " + std::to_string(captions.size()) + " captions for " +
+                                    std::to_string(meshes.size()) + " meshes");
+    if (!colours.empty() && colours.size() != meshes.size())
+        throw std::invalid_argument("render_sheet: " + std::to_string(colours.size()) + " colour lists for " +
                                     std::to_string(meshes.size()) + " meshes");
     const Camera cam = make_camera(options);
     const int n = static_cast<int>(meshes.size());
@@ -361,7 +388,8 @@ Image render_sheet(std::span<const MeshArrays> meshes, std::span<const std::stri
     parallel_for(meshes.size(), resolve_threads(0), [&](std::size_t index, int) {
         const int i = static_cast<int>(index);
         const Frame frame = options.shared_scale ? shared : fit(std::span(&placements[i], 1), size, cam);
-        const Image cell = render_framed(meshes[i].view(), placements[i].centre, frame, cam, options);
+        const Image cell = render_framed(meshes[i].view(), placements[i].centre, frame, cam, options,
+                                         colours.empty() ? std::span<const float>{} : std::span<const float>(colours[index]));
         const int x0 = (i % columns) * size, y0 = (i / columns) * cell_h;
         blit(sheet, cell, x0, y0);
         const int scale = caption_scale(size);
@@ -386,8 +414,9 @@ void write_png(const Image& image, const std::string& path) {
 }
 
 void render_contact_sheet(std::span<const MeshArrays> meshes, std::span<const std::string> captions,
-                          const std::string& png_path, const RenderOptions& options) {
-    write_png(render_sheet(meshes, captions, options), png_path);
+                          const std::string& png_path, const RenderOptions& options,
+                          std::span<const std::vector<float>> colours) {
+    write_png(render_sheet(meshes, captions, options, colours), png_path);
 }
 
 }  // namespace morphogen

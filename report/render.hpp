@@ -43,19 +43,24 @@ struct Image {
     }
 };
 
+// Vertex colours, where given: 4 linear floats per vertex (RGBA, as
+// engine/plant_colour.hpp makes them; A is ignored), sRGB-encoded and
+// interpolated across each face, then shaded. Empty: the plain plant green.
+
 // One mesh alone, framed to fill an options.size square picture. Non-finite
 // vertices and the faces using them are skipped. Throws std::invalid_argument
-// for options out of range.
-Image render_mesh(MeshView mesh, const RenderOptions& options);
+// for options out of range or colours that are not empty or 4 per vertex.
+Image render_mesh(MeshView mesh, const RenderOptions& options, std::span<const float> colours = {});
 
 // A grid of min(options.columns, meshes.size()) columns (at least one):
 // columns * size pixels wide, sheet_cell_height(size) per row high. Each cell
 // is the mesh's picture with a caption under it (captions[i], or "#i" where
 // captions is empty). With shared_scale all meshes are drawn at the scale that
 // fits the largest one, and their ground (z = 0) is on the same row.
+// colours: empty, or one entry per mesh (each empty or 4 per vertex).
 // Throws std::invalid_argument if captions is neither empty nor one per mesh.
 Image render_sheet(std::span<const MeshArrays> meshes, std::span<const std::string> captions,
-                   const RenderOptions& options);
+                   const RenderOptions& options, std::span<const std::vector<float>> colours = {});
 
 // Height of one sheet cell: the size x size picture plus its caption line.
 int sheet_cell_height(int size);
@@ -70,6 +75,7 @@ void write_png(const Image& image, const std::string& path);
 
 // render_sheet + write_png.
 void render_contact_sheet(std::span<const MeshArrays> meshes, std::span<const std::string> captions,
-                          const std::string& png_path, const RenderOptions& options);
+                          const std::string& png_path, const RenderOptions& options,
+                          std::span<const std::vector<float>> colours = {});
 
 }  // namespace morphogen

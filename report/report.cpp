@@ -141,7 +141,7 @@ json elites_json(Reporter& r, const ExperimentConfig& config, const Archive& arc
     for (std::size_t i = 0; p && i < grow_count; ++i) {
         const auto [cell, elite] = by_fitness[i];
         const std::string key = "cell_" + four_digits(cell);
-        const ReportPlant plant = grow_report_plant(config, *p, *elite, cell);
+        const ReportPlant plant = grow_report_plant(config, *p, *elite, cell, r.options.colour);
         if (plant.why_plain) r.note("elite of cell " + std::to_string(cell) + ": no wind or levels: " + *plant.why_plain);
         write_out(r.out / "elites" / (key + ".js"), mesh_script(key, plant.glb));
         cells[index.at(cell)]["script"] = "elites/" + key + ".js";
@@ -348,7 +348,7 @@ private:
 void animation_json(Reporter& r, const ExperimentConfig& config, const Individual& best) {
     int frames = r.options.animation_frames;
     std::string why;
-    if (const auto glb = report_animation_glb(config, Genome{config.network.layers(), best.params}, frames, why)) {
+    if (const auto glb = report_animation_glb(config, Genome{config.network.layers(), best.params}, frames, why, r.options.colour)) {
         write_out(r.out / "growth.glb", *glb);
         write_out(r.out / "growth.js", mesh_script("growth", *glb));
         r.data["animation"] = {{"script", "growth.js"}, {"file", "growth.glb"}, {"frames", frames}};
@@ -378,7 +378,7 @@ void best_json(Reporter& r, const RunInputs& in, Pictures& pictures, LazyGrowth&
               {"script", nullptr},
               {"architecture", nullptr}};
     if (const GenomeGrower* p = growth()) {
-        const ReportPlant plant = grow_report_plant(in.config, *p, *best, std::nullopt);
+        const ReportPlant plant = grow_report_plant(in.config, *p, *best, std::nullopt, r.options.colour);
         if (plant.why_plain) r.note("the final best has no wind or levels: " + *plant.why_plain);
         write_out(r.out / "best.js", mesh_script("best", plant.glb));
         b["script"] = "best.js";

@@ -1,6 +1,7 @@
 #include "report/report_plants.hpp"
 
 #include "core/base/errors.hpp"
+#include "engine/plant_colour.hpp"
 #include "engine/plant_export.hpp"
 #include "engine/plant_lods.hpp"
 #include "core/io/mesh_io.hpp"
@@ -15,17 +16,21 @@ int report_lod_count(std::size_t faces) {
 }
 
 ReportPlant grow_report_plant(const ExperimentConfig& config, const GenomeGrower& grower,
-                              const Individual& individual, std::optional<std::uint64_t> cell) {
+                              const Individual& individual, std::optional<std::uint64_t> cell, bool colour) {
     DatedGrowth dated = grow_dated(grower, individual.params);  // birth steps: the wind data's flutter
     ReportPlant plant{std::move(dated.state), {}, 0, {}};
     const MeshView mesh = plant.grown.mesh.view();
     PlantExportOptions options;
     options.wind = true;
     options.lods = report_lod_count(static_cast<std::size_t>(mesh.faces.size()));
+    options.colour = colour;
+    const std::vector<float> colours =
+        colour ? growth_colours(plant.grown, dated.birth_steps, grower.params()) : std::vector<float>{};
     try {
+        GrownPlant grown{.mesh = mesh, .birth_steps = dated.birth_steps, .steps = plant.grown.steps_done};
+        grown.colours = colours;
         const EnginePlant ready =
-            make_engine_plant(GrownPlant{.mesh = mesh, .birth_steps = dated.birth_steps, .steps = plant.grown.steps_done},
-                              birth_record(config, individual, config.qd.measure_names(), cell), options);
+            make_engine_plant(grown, birth_record(config, individual, config.qd.measure_names(), cell), options);
         plant.glb = plant_glb_bytes(ready, "plant " + std::to_string(individual.id));
         plant.lods = static_cast<int>(ready.levels.size());  // fewer than asked where the chain stopped (plant_lods.hpp)
     } catch (const MeshError& e) {

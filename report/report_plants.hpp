@@ -33,8 +33,9 @@ struct ReportPlant {
 // MAP-Elites cell) and writes its GLB with `--wind` and report_lod_count
 // levels, named and recorded as `archive` names it. A plant that cannot be
 // placed (MeshError) falls back to the plain GLB with `why_plain` set.
-// Throws what growth and encoding throw.
+// `colour`: COLOR_0 from growth history (engine/plant_colour.hpp), which
+// the viewer draws. Throws what growth and encoding throw.
 ReportPlant grow_report_plant(const ExperimentConfig& config, const GenomeGrower& grower,
-                              const Individual& individual, std::optional<std::uint64_t> cell);
+                              const Individual& individual, std::optional<std::uint64_t> cell, bool colour = true);
 
 }  // namespace morphogen

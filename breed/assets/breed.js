@@ -114,7 +114,10 @@ class Viewer {
         const root = gltf.scene;
         root.traverse((o) => {
           if (o.isMesh) {
-            o.material = new THREE.MeshStandardMaterial({ color: 0x6f9a4c, roughness: 0.8, side: THREE.DoubleSide });
+            // COLOR_0 (colours from growth history) is the colour where the GLB has it.
+            const coloured = Boolean(o.geometry.attributes.color);
+            o.material = new THREE.MeshStandardMaterial({
+              color: coloured ? 0xffffff : 0x6f9a4c, vertexColors: coloured, roughness: 0.8, side: THREE.DoubleSide });
           }
         });
         const box = new THREE.Box3().setFromObject(root);
@@ -409,6 +412,8 @@ async function exportChosen() {
   if (height !== '') request.height = Number(height);
   if (lods !== '') request.lods = Number(lods);
   if ($('export-wind').checked) request.wind = true;
+  if ($('export-colour').checked) request.colour = true;
+  if ($('export-leaves').checked) request.leaves = true;
   const presets = $('export-wind-presets').value.split(',').map((name) => name.trim()).filter((name) => name);
   if (presets.length) request.wind_presets = presets;
   const written = await act('POST', '/api/export', request);

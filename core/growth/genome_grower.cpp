@@ -66,6 +66,22 @@ GrowthState GenomeGrower::grow(const Network& network, GrowthWorkspace& workspac
     return grow_steps(grower, seed_, state.steps_done, workspace, after_step, phases);
 }
 
+GrowthState GenomeGrower::grow_dated(const Network& network, GrowthWorkspace& workspace,
+                                     std::vector<int>& births) const {
+    births.assign(static_cast<std::size_t>(seed_.mesh.num_vertices()), 0);
+    const StepObserver dating = [&births](const GrowthState& state, int step) {
+        births.resize(static_cast<std::size_t>(state.mesh.num_vertices()), step + 1);
+    };
+    const Grower grower(network, growth_);
+    GrowthState state = grower.grow(seed_, workspace, dating, nullptr);
+    if (fail_safe_) {
+        SelfIntersectionCheck check;
+        if (check.intersects(state.mesh)) state = last_clean_state(grower, seed_, growth_.steps, workspace, check);
+    }
+    births.resize(static_cast<std::size_t>(state.mesh.num_vertices()));
+    return state;
+}
+
 GrowthState GenomeGrower::grow(std::span<const double> genome, GrowthWorkspace& workspace) const {
     return grow(Network(Genome{layers_, std::vector<double>(genome.begin(), genome.end())}), workspace);
 }

@@ -43,6 +43,13 @@ public:
     // With a workspace of its own: one genome, e.g. to export it.
     GrowthState grow(std::span<const double> genome) const;
 
+    // grow(network, workspace) once (no second growth, unlike a step
+    // observer), and in `births` the step after which each vertex of the
+    // returned state first existed (0: the seed's). Growth appends vertices
+    // and never removes one, and the fail-safe's state is the same growth
+    // stopped early, so the counts seen during the one growth date it.
+    GrowthState grow_dated(const Network& network, GrowthWorkspace& workspace, std::vector<int>& births) const;
+
 private:
     std::vector<int> layers_;
     GrowthParams growth_;

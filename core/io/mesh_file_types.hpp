@@ -21,9 +21,10 @@ struct MeshWriteOptions {
     // PLY only: 64-bit coordinates and normals (an exact record) instead of
     // float32. three.js and other WebGL viewers cannot draw doubles.
     bool ply_double = false;
-    // OBJ and PLY: vertex colours, 4 linear floats per vertex (RGBA, as
-    // engine/plant_colour.hpp makes them) or empty. Written sRGB-encoded, as
-    // viewers read them: PLY red/green/blue uchar, OBJ `v x y z r g b`.
+    // OBJ, PLY and GLB: vertex colours, 4 linear floats per vertex (RGBA, as
+    // engine/plant_colour.hpp makes them) or empty. OBJ and PLY write them
+    // sRGB-encoded, as viewers read them: PLY red/green/blue uchar, OBJ
+    // `v x y z r g b`; GLB as COLOR_0 (linear) with a white material.
     std::span<const float> colours{};
 };
 

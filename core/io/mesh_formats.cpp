@@ -19,7 +19,8 @@ constexpr MeshFormat kFormats[] = {
      'p', true},
     {"OFF", ".off", [](MeshView m, const MeshWriteOptions&, const std::string&) { return off_bytes(m); }, &read_off, 'f', false},
     {"STL", ".stl", [](MeshView m, const MeshWriteOptions&, const std::string&) { return stl_bytes(m); }, &read_stl, 's', false},
-    {"GLB", ".glb", [](MeshView m, const MeshWriteOptions&, const std::string& s) { return glb_bytes(m, s); }, &read_glb, 0, true},
+    {"GLB", ".glb", [](MeshView m, const MeshWriteOptions& o, const std::string& s) { return glb_bytes(m, s, o.colours); },
+     [](const std::string& source, std::string_view bytes) { return read_glb(source, bytes); }, 0, true},
 };
 
 bool same_letters(std::string_view a, std::string_view b) {

@@ -117,4 +117,12 @@ MeshArrays read_mesh(const std::string& path) {
     return parse_mesh(read_file(path), format, path);
 }
 
+ColouredMesh read_coloured_mesh(const std::string& path) {
+    if (mesh_format_from_path(path).extension != ".glb") return {read_mesh(path), {}};
+    const std::string bytes = read_file(path);
+    ColouredMesh out;
+    out.mesh = read_glb(path, bytes, &out.colours);
+    return out;
+}
+
 }  // namespace morphogen

@@ -42,6 +42,16 @@ std::string encode_mesh(MeshView mesh, const MeshFormat& format, const MeshWrite
 // vertex); does not check topology. Throws IoError naming `path`.
 MeshArrays read_mesh(const std::string& path);
 
+// read_mesh and, for a GLB with float COLOR_0, its vertex colours: 4 linear
+// floats per vertex (RGBA; primitives without COLOR_0, such as leaf cards,
+// take their material's colour, a leaf green where it is textured);
+// otherwise no colours.
+struct ColouredMesh {
+    MeshArrays mesh;
+    std::vector<float> colours;
+};
+ColouredMesh read_coloured_mesh(const std::string& path);
+
 // read_mesh without the file: parses `bytes` in `format`;
 // errors name `source`. Never crashes, hangs or allocates beyond the limits
 // of mesh_file_types.hpp, whatever the bytes (the fuzz targets call this).

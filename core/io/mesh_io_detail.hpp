@@ -132,7 +132,8 @@ void check_colours(MeshView mesh, std::span<const float> colours);
 std::string off_bytes(MeshView mesh);
 std::string ply_bytes(MeshView mesh, const MeshWriteOptions& options);
 std::string stl_bytes(MeshView mesh);
-std::string glb_bytes(MeshView mesh, const std::string& path);
+// With colours (4 per vertex): COLOR_0 and the white plant material.
+std::string glb_bytes(MeshView mesh, const std::string& path, std::span<const float> colours = {});
 
 MeshArrays read_obj(const std::string& path, std::string_view text);
 MeshArrays read_off(const std::string& path, std::string_view text);
@@ -140,6 +141,10 @@ MeshArrays read_ply(const std::string& path, std::string_view text);
 MeshArrays read_stl(const std::string& path, std::string_view bytes);
 // The first mesh's triangles (every primitive of it), in its own coordinates
 // turned to z up.
-MeshArrays read_glb(const std::string& path, std::string_view bytes);
+// `colours`, when given: COLOR_0 as 4 linear floats per vertex (RGBA; A = 1
+// for VEC3) where a primitive has float COLOR_0 (primitives without it, such
+// as leaf cards, take their material's colour, a leaf green where it is
+// textured); left empty where none has it.
+MeshArrays read_glb(const std::string& path, std::string_view bytes, std::vector<float>* colours = nullptr);
 
 }  // namespace morphogen::mesh_io_detail

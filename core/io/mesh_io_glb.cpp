@@ -10,14 +10,16 @@
 
 namespace morphogen::mesh_io_detail {
 
-std::string glb_bytes(MeshView mesh, const std::string& path) {
+std::string glb_bytes(MeshView mesh, const std::string& path, std::span<const float> colours) {
+    check_colours(mesh, colours);
     tinygltf::Model model = gltf::new_model();
-    const int material = gltf::add_plant_material(model);
+    const int material = gltf::add_plant_material(model, !colours.empty());
 
     tinygltf::Node node;
     node.name = "morphogen";
     // An empty mesh becomes a scene with one empty node (add_mesh returns -1).
     node.mesh = gltf::add_mesh(model, mesh, material, "morphogen");
+    if (node.mesh >= 0 && !colours.empty()) gltf::add_vertex_attribute(model, node.mesh, "COLOR_0", 4, colours);
     model.nodes.push_back(node);
     gltf::set_root_scene(model, 0);
     return gltf::glb_bytes(model, path);
@@ -69,7 +71,37 @@ T element(const Elements& e, std::size_t i, std::size_t component = 0) {
 
 }  // namespace
 
-MeshArrays read_glb(const std::string& path, std::string_view bytes) {
+// The linear colour that stands for a textured material (leaf cards) in pictures.
+constexpr float kTexturedGreen[4] = {0.10f, 0.32f, 0.05f, 1.0f};
+
+// Appends the primitive's float COLOR_0 (VEC3 or VEC4) to `colours`, one RGBA
+// per of its `count` vertices; without COLOR_0, its material's base colour
+// (kTexturedGreen where the material is textured). False for COLOR_0 of
+// another kind.
+bool append_colours(const tinygltf::Model& model, const tinygltf::Primitive& primitive, std::size_t count,
+                    const std::string& path, const std::string& what, std::vector<float>& colours) {
+    const auto colour = primitive.attributes.find("COLOR_0");
+    if (colour == primitive.attributes.end()) {
+        const bool has_material = primitive.material >= 0 && static_cast<std::size_t>(primitive.material) < model.materials.size();
+        const tinygltf::PbrMetallicRoughness* pbr =
+            has_material ? &model.materials[static_cast<std::size_t>(primitive.material)].pbrMetallicRoughness : nullptr;
+        float rgba[4] = {kTexturedGreen[0], kTexturedGreen[1], kTexturedGreen[2], kTexturedGreen[3]};
+        if (pbr && pbr->baseColorTexture.index < 0 && pbr->baseColorFactor.size() == 4)
+            for (int c = 0; c < 4; ++c) rgba[c] = static_cast<float>(pbr->baseColorFactor[static_cast<std::size_t>(c)]);
+        for (std::size_t i = 0; i < count; ++i) colours.insert(colours.end(), rgba, rgba + 4);
+        return true;
+    }
+    const tinygltf::Accessor& a = accessor_at(model, colour->second, path, what + " COLOR_0");
+    const int width = a.type == TINYGLTF_TYPE_VEC3 ? 3 : a.type == TINYGLTF_TYPE_VEC4 ? 4 : 0;
+    if (width == 0 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT || a.count != count) return false;
+    const Elements e = elements(model, colour->second, 4 * static_cast<std::size_t>(width), path, what + " COLOR_0");
+    for (std::size_t i = 0; i < e.count; ++i)
+        for (int c = 0; c < 4; ++c) colours.push_back(c < width ? element<float>(e, i, c) : 1.0f);
+    return true;
+}
+
+MeshArrays read_glb(const std::string& path, std::string_view bytes, std::vector<float>* colours) {
+    bool all_coloured = colours != nullptr, any_colour = false;
     tinygltf::Model model;
     tinygltf::TinyGLTF loader;
     std::string error, warning;
@@ -99,6 +131,8 @@ MeshArrays read_glb(const std::string& path, std::string_view bytes) {
             check_position(v, path, "vertex", static_cast<long long>(base + i));
             out.positions.push_back(v);
         }
+        if (all_coloured) all_coloured = append_colours(model, primitive, positions.count, path, what, *colours);
+        any_colour = any_colour || primitive.attributes.count("COLOR_0") > 0;
         std::vector<std::size_t> corners;
         if (primitive.indices < 0) {
             for (std::size_t i = 0; i < positions.count; ++i) corners.push_back(i);
@@ -129,6 +163,7 @@ MeshArrays read_glb(const std::string& path, std::string_view bytes) {
             out.faces.push_back(face);
         }
     }
+    if (colours && !(all_coloured && any_colour)) colours->clear();
     return out;
 }
 

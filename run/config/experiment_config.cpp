@@ -2,6 +2,7 @@
 
 #include "core/base/config_reader.hpp"
 #include "core/base/errors.hpp"
+#include "engine/plant_smooth.hpp"
 #include "engine/plant_wind.hpp"
 #include "run/config/config_migration.hpp"
 
@@ -149,6 +150,9 @@ RunParams read_run_params(ObjectReader& reader) {
         if (const std::string problem = plant_export_problem(o); o.colour && !problem.empty())
             options.issues().add(options.path_of("colour"), problem);
         read_leaves(options, o);
+        // export_glb.smooth: grow's --smooth; read only when given (the resolved config's bytes).
+        if (options.raw("smooth") != nullptr)
+            o.smooth = static_cast<int>(options.integer("smooth", 0, 0, kMaxSmoothRounds));
         options.finish();
         reader.set_resolved("export_glb", options.resolved());
     }

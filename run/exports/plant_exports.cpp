@@ -1,6 +1,5 @@
 #include "run/exports/plant_exports.hpp"
 
-#include "engine/birth_steps.hpp"
 #include "engine/leaf_cards.hpp"
 #include "engine/plant_colour.hpp"
 #include "core/growth/genome_io.hpp"
@@ -26,22 +25,22 @@ PlantRecord birth_record(const ExperimentConfig& config, const Individual& indiv
 }
 
 DatedGrowth grow_dated(const GenomeGrower& grower, std::span<const double> params) {
-    BirthSteps births(grower.seed().mesh.num_vertices());
     GrowthWorkspace workspace;
     const Network network(Genome{grower.layers(), std::vector<double>(params.begin(), params.end())});
-    GrowthState state = grower.grow(network, workspace, births.observer());
-    return DatedGrowth{.state = std::move(state), .birth_steps = births.steps()};
+    std::vector<int> births;
+    GrowthState state = grower.grow_dated(network, workspace, births);
+    return DatedGrowth{.state = std::move(state), .birth_steps = std::move(births)};
 }
 
 void export_engine_plant(const GenomeGrower& grower, std::span<const double> params, const PlantRecord& record,
                          const PlantExportOptions& options, const std::filesystem::path& stem) {
     const DatedGrowth grown = grow_dated(grower, params);
     GrownPlant plant = grown.plant();
-    const std::vector<float> colours =
-        options.colour ? growth_colours(grown.state, grown.birth_steps, grower.params()) : std::vector<float>{};
-    plant.colours = colours;
     const std::vector<double> light =
         options.leaves ? leaf_light(grown.state, grower.params()) : std::vector<double>{};
+    const std::vector<float> colours =  // the leaves' light is the final exposure: computed once
+        options.colour ? growth_colours(grown.state, grown.birth_steps, grower.params(), light) : std::vector<float>{};
+    plant.colours = colours;
     plant.light = light;
     write_plant_glb(stem.string() + ".glb", plant, record, options);
     write_mesh(grown.state.mesh.view(), stem.string() + ".obj");

@@ -336,6 +336,7 @@ RunState load_checkpoint(const std::filesystem::path& path) {
         state.seed = content.at("seed").get<std::uint64_t>();
         const ExperimentConfig config = stored_config(stored, refuse);
         state.config = config.resolved;
+        if (config.run.seed != state.seed) throw refuse("its seed differs from its config's run.seed");
         const std::size_t dimension = parameter_count(config.network.layers());
         if (content.size() != (content.contains("pending") ? 7u : 6u)) throw refuse("unexpected keys in its content");
         // From format 2 the genomes come from the binary part, never through JSON numbers.

@@ -112,6 +112,29 @@ function firstCellPixels() {
   return { plant, sum };
 }
 
+// Pixels of the shared WebGL canvas in bark's hues (red to orange, 0-50
+// degrees, clearly saturated): the colours from growth history put them at
+// the plants' feet; the old uniform green (0x6f9a4c) under the page's lights
+// gives none (its darkest, ground-lit side is still about 70 degrees).
+function barkPixels() {
+  const canvas = document.getElementById('views');
+  const copy = document.createElement('canvas');
+  copy.width = canvas.width;
+  copy.height = canvas.height;
+  const ctx = copy.getContext('2d');
+  ctx.drawImage(canvas, 0, 0);
+  const px = ctx.getImageData(0, 0, copy.width, copy.height).data;
+  let bark = 0;
+  for (let i = 0; i < px.length; i += 4) {
+    const r = px[i], g = px[i + 1], b = px[i + 2];
+    const max = Math.max(r, g, b), min = Math.min(r, g, b);
+    if (px[i + 3] === 0 || max - min < 12 || max !== r) continue;
+    const hue = 60 * ((g - b) / (max - min));  // red is the largest: -60 .. 60 degrees
+    if (hue >= 0 && hue <= 50) bark++;
+  }
+  return bark;
+}
+
 async function waitGeneration(page, g, timeout = 30000) {
   await page.waitForFunction((want) => Number(document.getElementById('generation').textContent) === want, g, { timeout });
 }
@@ -149,6 +172,8 @@ async function runThrough(browser, tmp) {
     check(same(first, (await getState(address)).grid.map((p) => p.id)), 'load: the page shows the API\'s grid');
     check(await page.locator('#grid .cell .fitness').first().textContent() !== '', 'load: fitness under each plant');
     check(await page.locator('#grid .cell:first-child .measures dt').count() > 0, 'load: measures under each plant');
+    const bark = await page.evaluate(`(${barkPixels})()`);
+    check(bark > 200, `load: the plants are drawn in their colours from growth history (${bark} pixels in bark's hues)`);
 
     // Choose two, breed with strength 0.3.
     await select(page, [1, 4]);

@@ -8,7 +8,9 @@ material slots, "plant" and "leaf"; the leaf material alpha-clipped (glTF
 alphaMode MASK), drawn from both sides and textured with the embedded leaf
 image (128 x 128, with alpha); the level's triangles with the plant material
 as many as its extras' "triangles", and those with the leaf material two per
-card of its extras' "leaves". Exit status 1 on any failure.
+card of its extras' "leaves". A file named *colour*.glb (--colour) must also
+carry a colour attribute (COLOR_0) on every level, in [0, 1], with more than
+one colour on the plant's triangles. Exit status 1 on any failure.
 """
 import sys
 import warnings
@@ -30,6 +32,27 @@ def check(condition, message):
     if not condition:
         failures.append(message)
     return condition
+
+
+def check_colours(obj):
+    """The level's colour attribute (the importer's name for COLOR_0): in
+    range, and several colours on the plant's triangles (growth history)."""
+    attributes = list(obj.data.color_attributes)
+    if not check(attributes, f"{obj.name}: no colour attribute (COLOR_0 was not imported)"):
+        return
+    attribute = attributes[0]
+    values = [tuple(round(c, 3) for c in d.color[:3]) for d in attribute.data]
+    check(all(0.0 <= c <= 1.0 for v in values for c in v), f"{obj.name}: colours outside [0, 1]")
+    plant = set()
+    for polygon in obj.data.polygons:
+        if polygon.material_index != 0:
+            continue
+        for loop in polygon.loop_indices:
+            index = loop if attribute.domain == 'CORNER' else obj.data.loops[loop].vertex_index
+            plant.add(values[index])
+    check(len(plant) > 10, f"{obj.name}: {len(plant)} colours on the plant, not the growth history's many")
+    print(f"blender: {obj.name}: colour attribute {attribute.name!r} ({attribute.domain}), "
+          f"{len(plant)} colours on the plant")
 
 
 def check_file(path):
@@ -59,6 +82,8 @@ def check_file(path):
         check(by_material[1] == 2 * obj.get('leaves'),
               f"{obj.name}: {by_material[1]} leaf triangles, extras say {obj.get('leaves')} cards")
         cards.append(obj.get('leaves'))
+        if 'colour' in path:
+            check_colours(obj)
     print(f"blender {bpy.app.version_string}: {path}: {len(levels)} levels, two materials each "
           f"(plant; leaf: CLIP, two-sided, 128 x 128 texture with alpha), cards per level {cards}")
 

@@ -235,6 +235,34 @@ TEST_CASE("the animated glTF: one node per frame, STEP scale keys, one frame sho
     }
 }
 
+TEST_CASE("a coloured animation: each frame's colours from growth history as its COLOR_0, the same meshes",
+          "[animation][colour]") {
+    const ExperimentConfig config = small_config(30);
+    const Genome genome = genome_for(config, 3);
+    const GrowthFrames plain = record_growth_frames(config, genome, 7);
+    const GrowthFrames coloured = record_growth_frames(config, genome, 7, true);
+    CHECK(plain.colours.empty());
+    REQUIRE(coloured.colours.size() == 7);
+    for (std::size_t i = 0; i < 7; ++i) {
+        CHECK(coloured.meshes[i].positions == plain.meshes[i].positions);
+        CHECK(coloured.meshes[i].faces == plain.meshes[i].faces);
+        REQUIRE(coloured.colours[i].size() == 4 * coloured.meshes[i].positions.size());
+        CHECK(std::all_of(coloured.colours[i].begin(), coloured.colours[i].end(),
+                          [](float c) { return c >= 0.0f && c <= 1.0f; }));
+    }
+    // The final frame has several colours (a seed of one age may have one).
+    std::set<std::vector<float>> last;
+    for (std::size_t v = 0; v < coloured.meshes.back().positions.size(); ++v)
+        last.insert({coloured.colours.back().begin() + 4 * v, coloured.colours.back().begin() + 4 * v + 3});
+    CHECK(last.size() > 10);
+    const tinygltf::Model with = parse_glb(encode_growth_animation_glb(coloured, 0.1));
+    const tinygltf::Model without = parse_glb(encode_growth_animation_glb(plain, 0.1));
+    for (const tinygltf::Mesh& mesh : with.meshes) CHECK(mesh.primitives.at(0).attributes.count("COLOR_0") == 1);
+    for (const tinygltf::Mesh& mesh : without.meshes) CHECK(mesh.primitives.at(0).attributes.count("COLOR_0") == 0);
+    CHECK(with.materials.at(0).pbrMetallicRoughness.baseColorFactor == std::vector<double>{1, 1, 1, 1});
+    CHECK(floats(with, with.meshes.back().primitives.at(0).attributes.at("COLOR_0")) == coloured.colours.back());
+}
+
 TEST_CASE("the animation refuses what it cannot show, naming the file", "[animation]") {
     const ExperimentConfig config = small_config(10);
     const GrowthFrames frames = record_growth_frames(config, genome_for(config, 1), 3);

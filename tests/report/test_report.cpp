@@ -242,7 +242,7 @@ TEST_CASE("a MAP-Elites run: the archive's cells, the fittest elites grown for t
     CHECK(d["history"]["columns"].contains("coverage"));
 }
 
-TEST_CASE("the viewer's grown plants are engine-ready: named for their birth, wind data, levels halving",
+TEST_CASE("the viewer's grown plants are engine-ready: named for their birth, wind data, colours, levels halving",
           "[app][report]") {
     TempDir tmp("report_engine");
     const fs::path run = make_run(tmp, R"({"network": {"outputs": 4, "hidden": [5]},
@@ -280,7 +280,9 @@ TEST_CASE("the viewer's grown plants are engine-ready: named for their birth, wi
             CHECK(node["name"] == name + "_LOD" + std::to_string(i));
             const nlohmann::json& primitive = gltf["meshes"][node["mesh"].get<int>()]["primitives"][0];
             CHECK(primitive["attributes"].contains("_WIND"));
-            CHECK_FALSE(primitive["attributes"].contains("COLOR_0"));
+            CHECK(primitive["attributes"].contains("COLOR_0"));  // colours from growth history, the viewer draws them
+            // The white material (glTF's default base colour, so not written): the vertex colour is the colour.
+            CHECK_FALSE(gltf["materials"][primitive["material"].get<int>()]["pbrMetallicRoughness"].contains("baseColorFactor"));
             if (i > 0) {  // about half the triangles of the level before
                 const double ratio = node["extras"]["triangles"].get<double>() /
                                      gltf["nodes"][root["children"][i - 1].get<int>()]["extras"]["triangles"].get<double>();
@@ -288,6 +290,15 @@ TEST_CASE("the viewer's grown plants are engine-ready: named for their birth, wi
                 CHECK(ratio < 0.6);
             }
         }
+    }
+    // --no-colour: the plain green, no COLOR_0, in the viewer and the growth animation.
+    REQUIRE(run_morphogen("report " + q(run) + " --elites 3 --no-colour -o " + q(tmp.path / "plain")).code == 0);
+    const nlohmann::json plain = script_gltf(tmp.path / "plain" / "best.js");
+    for (const auto& mesh : plain["meshes"]) CHECK_FALSE(mesh["primitives"][0]["attributes"].contains("COLOR_0"));
+    for (const std::string& dir : {std::string("report"), std::string("plain")}) {
+        const nlohmann::json growth = script_gltf(dir == "report" ? run / "report" / "growth.js" : tmp.path / dir / "growth.js");
+        for (const auto& mesh : growth["meshes"])
+            CHECK(mesh["primitives"][0]["attributes"].contains("COLOR_0") == (dir == "report"));
     }
 }
 
