@@ -70,7 +70,7 @@ int run_grow(const GrowOptions& options) {
                           config_source(options.config));
     // Refuse an unknown extension, or colours it cannot hold, before growing.
     if (options.plant.colour && !mesh_format_from_path(options.output).colours)
-        throw ConfigError("--colour: " + options.output + " cannot hold vertex colours; write .glb, .ply or .obj");
+        throw ConfigError("--colour: " + options.output + " cannot hold vertex colours; write " + colour_extensions());
     const bool animating = !options.animate.empty() || !options.frames_obj.empty();
     const int frames = options.frames.value_or(default_animation_frames(config.growth.steps));
     if (animating) {
@@ -102,8 +102,9 @@ int run_grow(const GrowOptions& options) {
     const std::vector<double> light = options.plant.leaves ? leaf_light(state, config.growth) : std::vector<double>{};
     const std::vector<float> colours =  // the leaves' light is the final exposure: computed once
         options.plant.colour ? growth_colours(state, birth_steps, config.growth, light) : std::vector<float>{};
-    const MeshFormat& format = mesh_format_from_path(options.output);
-    if (options.plant.engine_ready() || (options.plant.colour && format.extension == ".glb")) {
+    // A coloured GLB is a plant's GLB (its colours are a material's, not a mesh file's).
+    const bool glb = mesh_format_from_path(options.output).extension == ".glb";
+    if (options.plant.engine_ready() || (options.plant.colour && glb)) {
         write_plant_glb(options.output,
                         GrownPlant{.mesh = state.mesh.view(), .birth_steps = birth_steps, .steps = state.steps_done,
                                    .colours = colours, .light = light},

@@ -125,7 +125,7 @@ int run_score(const ScoreOptions& options) {
 void add_score_command(CLI::App& root, CommandRunner& selected) {
     auto options = std::make_shared<ScoreOptions>();
     CLI::App* cmd = root.add_subcommand("score", "Print the configured fitness and every metric of a mesh");
-    auto* mesh = cmd->add_option("--mesh", options->mesh, "Score this mesh file (" + mesh_extensions(true) + ")")
+    auto* mesh = cmd->add_option("--mesh", options->mesh, "Score this mesh file (" + mesh_extensions() + ")")
                      ->check(CLI::ExistingFile);
     auto* genome = cmd->add_option("--genome", options->genome, "Grow this genome (JSON) and score the mesh")
                        ->check(CLI::ExistingFile);

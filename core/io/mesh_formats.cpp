@@ -11,10 +11,11 @@ using namespace mesh_io_detail;
 
 namespace {
 
-// One row per format: its name, extension, writer, reader (nullptr: written
-// only), fuzz tag (GLB is not fuzzed) and whether it holds vertex colours.
+// One row per format: its name, extension, writer, reader, fuzz tag (GLB's reader is not fuzzed: 0) and
+// whether it holds vertex colours.
 constexpr MeshFormat kFormats[] = {
-    {"OBJ", ".obj", [](MeshView m, const MeshWriteOptions& o, const std::string&) { return obj_bytes(m, o.colours); }, &read_obj, 'o', true},
+    {"OBJ", ".obj", [](MeshView m, const MeshWriteOptions& o, const std::string&) { return obj_bytes(m, o.colours); },
+     &read_obj, 'o', true},
     {"PLY", ".ply", [](MeshView m, const MeshWriteOptions& o, const std::string&) { return ply_bytes(m, o); }, &read_ply,
      'p', true},
     {"OFF", ".off", [](MeshView m, const MeshWriteOptions&, const std::string&) { return off_bytes(m); }, &read_off, 'f', false},
@@ -39,12 +40,27 @@ const MeshFormat* find_mesh_format(std::string_view extension) {
     return nullptr;
 }
 
-std::string mesh_extensions(bool readable_only) {
+std::string mesh_extensions() {
     std::string out;
     for (const MeshFormat& format : kFormats) {
-        if (readable_only && format.read == nullptr) continue;
         if (!out.empty()) out += ' ';
         out += format.extension;
+    }
+    return out;
+}
+
+std::string colour_extensions() {
+    std::vector<std::string_view> items;
+    for (const MeshFormat& format : kFormats)
+        if (format.colours) items.push_back(format.extension);
+    return or_list(items);
+}
+
+std::string or_list(const std::vector<std::string_view>& items) {
+    std::string out;
+    for (std::size_t i = 0; i < items.size(); ++i) {
+        if (i > 0) out += i + 1 == items.size() ? " or " : ", ";
+        out += items[i];
     }
     return out;
 }

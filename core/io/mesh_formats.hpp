@@ -9,6 +9,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace morphogen {
 
@@ -18,10 +19,10 @@ struct MeshFormat {
     // The file's bytes; `source` names the mesh in errors. Indices are checked before.
     std::string (*write)(MeshView mesh, const MeshWriteOptions& options, const std::string& source);
     // The mesh in `bytes` (every limit of mesh_file_types.hpp checked), errors
-    // naming `source`; null for a format that is only written.
+    // naming `source`.
     MeshArrays (*read)(const std::string& source, std::string_view bytes);
     char fuzz_tag;  // the byte that picks this reader in fuzz/fuzz_mesh.cpp (0: none)
-    bool colours;   // can hold per-vertex colours (`--colour`; GLB through plant_glb)
+    bool colours;   // holds vertex colours (grow --colour)
 };
 
 // Every format, in the order the help texts list them.
@@ -30,8 +31,13 @@ std::span<const MeshFormat> mesh_formats();
 // The format whose extension is `extension` (".glb"), case-insensitive; null when none is.
 const MeshFormat* find_mesh_format(std::string_view extension);
 
-// The extensions, space-separated (".obj .ply .off .stl .glb"), for help
-// texts: every format's, or only those with a reader.
-std::string mesh_extensions(bool readable_only = false);
+// The extensions, space-separated (".obj .ply .off .stl .glb"), for help texts.
+std::string mesh_extensions();
+
+// "a, b or c": the extensions of the formats that hold vertex colours.
+std::string colour_extensions();
+
+// "a, b or c" (for messages that list formats).
+std::string or_list(const std::vector<std::string_view>& items);
 
 }  // namespace morphogen

@@ -61,17 +61,11 @@ void check_indices(MeshView mesh, const std::string& path) {
                                std::to_string(v) + " out of range [0, " + std::to_string(nv) + ")");
 }
 
-// "a, b or c": the table's extensions (or names of the formats with a reader).
-std::string listed(bool readers) {
+// "a, b or c": the table's extensions.
+std::string listed() {
     std::vector<std::string_view> items;
-    for (const MeshFormat& format : mesh_formats())
-        if (!readers || format.read != nullptr) items.push_back(readers ? format.name : format.extension);
-    std::string out;
-    for (std::size_t i = 0; i < items.size(); ++i) {
-        if (i > 0) out += i + 1 == items.size() ? " or " : ", ";
-        out += items[i];
-    }
-    return out;
+    for (const MeshFormat& format : mesh_formats()) items.push_back(format.extension);
+    return or_list(items);
 }
 
 }  // namespace
@@ -80,7 +74,7 @@ const MeshFormat& mesh_format_from_path(const std::string& path) {
     const std::string ext = lower(std::filesystem::path(path).extension().string());
     if (const MeshFormat* format = find_mesh_format(ext)) return *format;
     fail(path, "unknown mesh file extension " + excerpt(ext.empty() ? std::string("(none)") : ext) + " (expected " +
-                   listed(false) + ")");
+                   listed() + ")");
 }
 
 const MeshFormat& mesh_format(std::string_view extension) {
@@ -103,8 +97,6 @@ std::string encode_mesh(MeshView mesh, const MeshFormat& format, const MeshWrite
 }
 
 MeshArrays parse_mesh(std::string_view bytes, const MeshFormat& format, const std::string& source) {
-    if (format.read == nullptr)
-        fail(source, "reading " + std::string(format.name) + " is not supported (use " + listed(true) + ")");
     if (bytes.size() > kMaxMeshFileBytes)
         fail(source, std::to_string(bytes.size()) + " bytes, more than the limit of " +
                          std::to_string(kMaxMeshFileBytes) + " bytes for mesh files");
@@ -113,7 +105,6 @@ MeshArrays parse_mesh(std::string_view bytes, const MeshFormat& format, const st
 
 MeshArrays read_mesh(const std::string& path) {
     const MeshFormat& format = mesh_format_from_path(path);
-    if (format.read == nullptr) return parse_mesh({}, format, path);  // refused before the file is read
     return parse_mesh(read_file(path), format, path);
 }
 

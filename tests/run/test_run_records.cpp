@@ -10,6 +10,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <random>
 
@@ -18,6 +19,7 @@ using namespace morphogen::test;
 using morphogen::testing::read_text;
 using morphogen::testing::TempDir;
 using morphogen::testing::write_text;
+namespace fs = std::filesystem;
 
 TEST_CASE("numbers are written in shortest round-trip form", "[run][records]") {
     for (double v : {0.1, 1.0 / 3.0, 2.0, -0.0, 1e-300, 123456789.123456789, std::nextafter(1.0, 2.0)}) {
