@@ -10,7 +10,6 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -593,8 +592,8 @@ TEST_CASE("hostile mesh corpus: each file is refused at once with its defect, na
         require_read_error((corpus_dir / name).string(), what);
     }
     // Every file there (the fuzzers add theirs): refused with an IoError that
-    // names it, or read (only valid-* seeds and invalid_mesh_* files read); never a crash, a hang or another exception.
-    const auto start = std::chrono::steady_clock::now();
+    // names it, or read (only valid-* seeds and invalid_mesh_* files read); never a crash or another exception
+    // (a hang is caught by the test's CTest timeout, not timed here).
     int files = 0;
     for (const auto& entry : fs::directory_iterator(corpus_dir)) {
         const std::string path = entry.path().string();
@@ -611,7 +610,6 @@ TEST_CASE("hostile mesh corpus: each file is refused at once with its defect, na
         }
     }
     CHECK(files >= static_cast<int>(std::size(cases)));
-    CHECK(std::chrono::steady_clock::now() - start < std::chrono::seconds(5));
 }
 
 TEST_CASE("parse_mesh reads from memory like read_mesh and names the source", "[mesh_io]") {
