@@ -4,7 +4,7 @@
 #include "app/resource_options.hpp"
 #include "core/base/config_reader.hpp"
 #include "core/base/errors.hpp"
-#include "fitness/architecture_json.hpp"
+#include "fitness/architecture/architecture_json.hpp"
 #include "fitness/fitness.hpp"
 #include "core/growth/genome_grower.hpp"
 #include "core/io/mesh_io.hpp"

@@ -11,8 +11,8 @@
 // the built-in types are made of; a new type uses them or states its own
 // numbers.
 #include "core/mesh/mesh.hpp"
-#include "fitness/canopy.hpp"
-#include "fitness/light.hpp"
+#include "fitness/functions/canopy.hpp"
+#include "fitness/functions/light.hpp"
 
 #include <cstddef>
 #include <string>

@@ -1,9 +1,9 @@
 #include "fitness/descriptors.hpp"
 
 #include "core/base/config_reader.hpp"
-#include "fitness/architecture.hpp"
+#include "fitness/architecture/architecture.hpp"
 #include "fitness/measures.hpp"
-#include "fitness/tree_sections.hpp"
+#include "fitness/architecture/tree_sections.hpp"
 
 #include <cmath>
 #include <numbers>

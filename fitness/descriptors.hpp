@@ -5,7 +5,7 @@
 // (Fitness::canopy_params), thread-safe. A measure may be non-finite for a
 // degenerate mesh (e.g. slenderness of a zero footprint); a DescriptorSet
 // refuses such a value, so descriptors that reach a search are finite.
-#include "fitness/canopy.hpp"
+#include "fitness/functions/canopy.hpp"
 #include "core/mesh/mesh.hpp"
 
 #include <span>

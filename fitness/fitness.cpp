@@ -1,7 +1,7 @@
 // The Fitness wrapper: every check on a score happens here, once.
 #include "fitness/fitness.hpp"
 
-#include "fitness/cgal_geometry.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
 #include "fitness/measures.hpp"
 
 #include <cmath>

@@ -9,7 +9,7 @@
 // again. CGAL never appears in this header.
 #include "core/base/config_reader.hpp"
 #include "core/mesh/mesh.hpp"
-#include "fitness/canopy.hpp"
+#include "fitness/functions/canopy.hpp"
 #include "fitness/cost.hpp"
 
 #include <nlohmann/json.hpp>

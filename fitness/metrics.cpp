@@ -1,8 +1,8 @@
 // The metrics report of a mesh (score command, run records).
 #include "fitness/fitness.hpp"
 
-#include "fitness/canopy.hpp"
-#include "fitness/cgal_geometry.hpp"
+#include "fitness/functions/canopy.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
 #include "fitness/measures.hpp"
 
 namespace morphogen {

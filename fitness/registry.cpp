@@ -4,13 +4,13 @@
 // one row of kTypes; one from elsewhere is registered (register_fitness_type).
 #include "fitness/fitness.hpp"
 
-#include "fitness/canopy.hpp"
-#include "fitness/cgal_geometry.hpp"
-#include "fitness/light.hpp"
+#include "fitness/functions/canopy.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
+#include "fitness/functions/light.hpp"
 #include "fitness/measures.hpp"
-#include "fitness/plant_fitness.hpp"
-#include "fitness/tree_fitness.hpp"
-#include "fitness/tree_sections.hpp"
+#include "fitness/functions/plant_fitness.hpp"
+#include "fitness/functions/tree_fitness.hpp"
+#include "fitness/architecture/tree_sections.hpp"
 
 #include <stdexcept>
 #include <utility>

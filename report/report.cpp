@@ -3,7 +3,7 @@
 #include "core/base/atomic_file.hpp"
 #include "core/base/config_reader.hpp"
 #include "core/base/errors.hpp"
-#include "fitness/architecture_json.hpp"
+#include "fitness/architecture/architecture_json.hpp"
 #include "core/growth/genome_grower.hpp"
 #include "core/io/mesh_io.hpp"
 #include "report/render.hpp"

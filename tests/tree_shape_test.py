@@ -299,7 +299,7 @@ class CsvAndSelfIntersectionTest(TempDirTest):
 
     @unittest.skipUnless(os.access(MORPHOGEN, os.X_OK), f"{MORPHOGEN} is not built")
     def test_the_executables_tree_measures_agree_on_grown_meshes(self):
-        # fitness/tree_sections.cpp (as the fitness types trunk_ratio and
+        # fitness/architecture/tree_sections.cpp (as the fitness types trunk_ratio and
         # upper_loops) and this script, on random genomes grown by morphogen.
         configs = {}
         for measure in ("trunk_ratio", "upper_loops"):

@@ -2,7 +2,7 @@
 // grown meshes (docs/fitness.md). Not part of the suite (ctest label "bench"):
 // build/tests/bench_timings '[fitness]'
 #include "core/growth/genome_grower.hpp"
-#include "fitness/canopy.hpp"
+#include "fitness/functions/canopy.hpp"
 #include "fitness/descriptors.hpp"
 #include "fitness/measures.hpp"
 #include "tests/fitness/mesh_builders.hpp"

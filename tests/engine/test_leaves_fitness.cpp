@@ -1,7 +1,7 @@
 // Do the foliage cards (engine/leaf_cards.hpp) stand where the `plant`
 // fitness puts its leaves? The fitness counts every face as leaf tissue,
 // grouped in cubes of side leaf_size, each yielding by its cube's mean
-// irradiance (fitness/plant_fitness.hpp). Over 60 random genomes of
+// irradiance (fitness/functions/plant_fitness.hpp). Over 60 random genomes of
 // tree.json's growth and fitness (15 carry cards, 1,345 cards), the faces
 // around the cards' vertices yield 1.13 times the light per unit area of the
 // plants' faces on average, and 114 cards (8.5 %) stand in leaves no ray
@@ -9,7 +9,7 @@
 // rays. Asserted: more than the average, and at most 15 % in unlit leaves.
 #include "engine/leaf_cards.hpp"
 #include "engine/plant_frame.hpp"
-#include "fitness/plant_fitness.hpp"
+#include "fitness/functions/plant_fitness.hpp"
 #include "tests/engine/grow_dated.hpp"
 
 #include <catch2/catch.hpp>

@@ -9,7 +9,7 @@
 #include "engine/plant_smooth.hpp"
 #include "engine/plant_wind.hpp"
 #include "core/growth/genome_grower.hpp"
-#include "fitness/cgal_geometry.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
 #include "tests/engine/glb_reader.hpp"
 #include "tests/support/test_genomes.hpp"
 

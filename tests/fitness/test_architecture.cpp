@@ -1,8 +1,8 @@
-// The architecture measures (fitness/architecture.hpp) on implicit shapes
+// The architecture measures (fitness/architecture/architecture.hpp) on implicit shapes
 // with known answers, and on hostile meshes.
-#include "fitness/architecture.hpp"
+#include "fitness/architecture/architecture.hpp"
 #include "fitness/descriptors.hpp"
-#include "fitness/skeleton.hpp"
+#include "fitness/architecture/skeleton.hpp"
 #include "tests/fitness/limb_controls.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 #include "tests/support/implicit_mesh.hpp"

@@ -1,6 +1,6 @@
 // Canopy (docs/algorithm.md §10.1): known answers, the exact-edge rule, and the
 // z-buffer agreeing cell for cell with CGAL ray shooting.
-#include "fitness/canopy.hpp"
+#include "fitness/functions/canopy.hpp"
 #include "fitness/measures.hpp"
 #include "core/growth/genome_grower.hpp"
 #include "tests/fitness/mesh_builders.hpp"

@@ -2,7 +2,7 @@
 // fail-safe (§5.7.1) against the fitness side's own check, CGAL's
 // does_self_intersect (mesh_self_intersects): grown meshes never
 // self-intersect, where "allow" grows many that do.
-#include "fitness/cgal_geometry.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
 #include "core/growth/random_genome_centre.hpp"
 #include "core/growth/genome_grower.hpp"
 #include "core/growth/contact/self_intersection_check.hpp"

@@ -1,6 +1,6 @@
 // Descriptor measures on meshes with known answers, the canopy tops behind
 // crown_height, and the lookup by name.
-#include "fitness/canopy.hpp"
+#include "fitness/functions/canopy.hpp"
 #include "fitness/descriptors.hpp"
 #include "fitness/measures.hpp"
 #include "tests/fitness/mesh_builders.hpp"

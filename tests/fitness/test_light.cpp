@@ -1,5 +1,5 @@
 // Light captured from parallel sun rays, with self-shading.
-#include "fitness/light.hpp"
+#include "fitness/functions/light.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>

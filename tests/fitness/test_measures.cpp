@@ -1,5 +1,5 @@
 // Measures and metrics: volume, area, footprint, height, self-intersection.
-#include "fitness/cgal_geometry.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
 #include "fitness/fitness.hpp"
 #include "fitness/measures.hpp"
 #include "tests/fitness/mesh_builders.hpp"

@@ -1,9 +1,9 @@
-// The `plant` fitness (fitness/plant_fitness.hpp, docs/fitness-plant.md "plant"):
+// The `plant` fitness (fitness/functions/plant_fitness.hpp, docs/fitness-plant.md "plant"):
 // its light term on meshes whose irradiance is known, its moment, and its
-// config keys. The tips come from fitness/architecture.hpp, tested there.
+// config keys. The tips come from fitness/architecture/architecture.hpp, tested there.
 #include "fitness/fitness.hpp"
-#include "fitness/light.hpp"
-#include "fitness/plant_fitness.hpp"
+#include "fitness/functions/light.hpp"
+#include "fitness/functions/plant_fitness.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>

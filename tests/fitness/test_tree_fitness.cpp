@@ -1,7 +1,7 @@
-// The `tree` fitness (fitness/tree_fitness.hpp, docs/fitness-tree.md "tree") on
+// The `tree` fitness (fitness/functions/tree_fitness.hpp, docs/fitness-tree.md "tree") on
 // meshes whose light, sections and volume are known, and its config keys.
 #include "fitness/fitness.hpp"
-#include "fitness/tree_fitness.hpp"
+#include "fitness/functions/tree_fitness.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>

@@ -1,8 +1,8 @@
-// The tree measures (fitness/tree_sections.hpp, docs/fitness-measures.md "Tree
+// The tree measures (fitness/architecture/tree_sections.hpp, docs/fitness-measures.md "Tree
 // measures") on meshes with known answers, and as fitness terms and
 // descriptors.
 #include "fitness/descriptors.hpp"
-#include "fitness/tree_sections.hpp"
+#include "fitness/architecture/tree_sections.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>

@@ -4,7 +4,7 @@
 // To run: copy to tests/fitness/, add it to test_fitness's sources in
 // tests/CMakeLists.txt, build, then: [TREE=1] [PAPER=1] [N=300 | G=19,73]
 // build/tests/test_fitness "[diag]".
-#include "fitness/cgal_geometry.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
 #include "core/growth/genome_grower.hpp"
 #include "core/growth/contact/contact_geometry.hpp"
 #include "core/mesh/face_pair.hpp"

@@ -1,7 +1,7 @@
-#include "fitness/tree_fitness.hpp"
+#include "fitness/functions/tree_fitness.hpp"
 
 #include "fitness/measures.hpp"
-#include "fitness/tree_sections.hpp"
+#include "fitness/architecture/tree_sections.hpp"
 
 #include <algorithm>
 #include <cmath>

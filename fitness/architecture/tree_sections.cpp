@@ -1,4 +1,4 @@
-#include "fitness/tree_sections.hpp"
+#include "fitness/architecture/tree_sections.hpp"
 
 #include "fitness/measures.hpp"
 

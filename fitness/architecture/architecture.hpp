@@ -1,6 +1,6 @@
 #pragma once
 // Measures of a plant's architecture from its level-set skeleton
-// (fitness/skeleton.hpp; docs/fitness-measures.md "Architecture measures"): they tell
+// (fitness/architecture/skeleton.hpp; docs/fitness-measures.md "Architecture measures"): they tell
 // a branching tree from a stalk under one crown.
 //
 // - A branch is the skeleton path from a fork (a node with 2+ children) to
@@ -29,7 +29,7 @@
 //   convex-hull volume, NaN for an open mesh (an edge used more often in
 //   one direction than in the other, after the welding of skeleton.hpp) or
 //   a hull of no volume.
-#include "fitness/skeleton.hpp"
+#include "fitness/architecture/skeleton.hpp"
 #include "core/mesh/mesh.hpp"
 
 #include <vector>

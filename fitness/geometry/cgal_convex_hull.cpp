@@ -1,6 +1,6 @@
-// CGAL's convex_hull_3 behind fitness/convex_hull.hpp (CGAL compiles slowly:
+// CGAL's convex_hull_3 behind fitness/geometry/convex_hull.hpp (CGAL compiles slowly:
 // only cgal_*.cpp include it).
-#include "fitness/convex_hull.hpp"
+#include "fitness/geometry/convex_hull.hpp"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>

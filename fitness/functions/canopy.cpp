@@ -4,9 +4,9 @@
 // edge rule is exact: a centre on a shared edge is inside both triangles, no
 // centre falls through a crack, and the result equals ray shooting on CGAL's
 // exact predicates (canopy_reference.cpp).
-#include "fitness/canopy.hpp"
+#include "fitness/functions/canopy.hpp"
 
-#include "fitness/cgal_geometry.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
 #include "fitness/measures.hpp"
 
 #include <algorithm>

@@ -20,7 +20,7 @@
 // than a ray's cross-section is hit by one ray or none, and the hyperbola,
 // concave, undercounts such a sampled irradiance (a surface of 0.02-unit²
 // faces caught a quarter of its light at the rays' spacing 0.25).
-// Tips are the skeleton's (fitness/architecture.hpp). S_t is the tip's own
+// Tips are the skeleton's (fitness/architecture/architecture.hpp). S_t is the tip's own
 // light: the saturating light of the faces whose centroid is nearer to tip t
 // than to any other tip and within shoot_radius of it (a shoot feeds its
 // fruit from its own leaves: branch autonomy, Sprugel et al. 1991), so a tip
@@ -31,8 +31,8 @@
 // bending moment of a surface of even weight about the foot; V is the enclosed
 // volume (the wood a solid body costs to build). A plant whose
 // lowest vertex is above root_height floats, and scores 0.
-#include "fitness/architecture.hpp"
-#include "fitness/light.hpp"
+#include "fitness/architecture/architecture.hpp"
+#include "fitness/functions/light.hpp"
 #include "core/mesh/mesh.hpp"
 
 namespace morphogen {

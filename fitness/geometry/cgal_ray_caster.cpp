@@ -1,5 +1,5 @@
 // CGAL AABB tree behind RayCaster, and the exact 2-D orientation fallback.
-#include "fitness/cgal_geometry.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>

@@ -3,7 +3,7 @@
 // HTML report: {"tips", "limbs", "limb_lengths", "limb_thicknesses",
 // "first_fork_height", "strahler", "solidity" (null when NaN), "forks",
 // "band_width"}.
-#include "fitness/architecture.hpp"
+#include "fitness/architecture/architecture.hpp"
 
 #include <nlohmann/json.hpp>
 

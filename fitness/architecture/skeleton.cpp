@@ -1,7 +1,7 @@
-#include "fitness/skeleton.hpp"
+#include "fitness/architecture/skeleton.hpp"
 
 #include "fitness/measures.hpp"
-#include "fitness/welded_mesh.hpp"
+#include "fitness/architecture/welded_mesh.hpp"
 
 #include <algorithm>
 #include <array>

@@ -1,6 +1,6 @@
-#include "fitness/light.hpp"
+#include "fitness/functions/light.hpp"
 
-#include "fitness/cgal_geometry.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
 #include "fitness/measures.hpp"
 
 #include <Eigen/Geometry>

@@ -1,4 +1,4 @@
-#include "fitness/plant_fitness.hpp"
+#include "fitness/functions/plant_fitness.hpp"
 
 #include "fitness/measures.hpp"
 

@@ -1,4 +1,4 @@
-#include "fitness/welded_mesh.hpp"
+#include "fitness/architecture/welded_mesh.hpp"
 
 #include <algorithm>
 #include <numeric>

@@ -1,4 +1,4 @@
-#include "fitness/architecture_json.hpp"
+#include "fitness/architecture/architecture_json.hpp"
 
 #include <cmath>
 

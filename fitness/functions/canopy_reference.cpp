@@ -3,9 +3,9 @@
 // definition, so tests can compare the two cell for cell. Hit points are
 // constructed exactly: double-precision ray/triangle constructions go wrong on
 // triangles seen almost edge-on from above.
-#include "fitness/canopy.hpp"
+#include "fitness/functions/canopy.hpp"
 
-#include "fitness/cgal_geometry.hpp"
+#include "fitness/geometry/cgal_geometry.hpp"
 #include "fitness/measures.hpp"
 
 #include <algorithm>

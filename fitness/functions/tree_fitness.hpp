@@ -9,11 +9,11 @@
 //                                                or the lowest vertex is above root_height)
 //   B = min(upper_loops, loops_target) / loops_target
 //
-// trunk_ratio and upper_loops are the tree measures of fitness/tree_sections.hpp.
+// trunk_ratio and upper_loops are the tree measures of fitness/architecture/tree_sections.hpp.
 // T and B saturate at a tree's criteria (the targets), so nothing is gained by a thinner
 // trunk or more loops than a tree needs; light and cost keep the pressure on.
 // Above the target, a stem 10 % thinner is worth trunk_power × 10 % more light.
-#include "fitness/light.hpp"
+#include "fitness/functions/light.hpp"
 #include "core/mesh/mesh.hpp"
 
 namespace morphogen {

@@ -1,8 +1,8 @@
-#include "fitness/architecture.hpp"
+#include "fitness/architecture/architecture.hpp"
 
-#include "fitness/convex_hull.hpp"
+#include "fitness/geometry/convex_hull.hpp"
 #include "fitness/measures.hpp"
-#include "fitness/welded_mesh.hpp"
+#include "fitness/architecture/welded_mesh.hpp"
 
 #include <algorithm>
 #include <cmath>
