@@ -13,6 +13,7 @@
 
 #include <array>
 #include <filesystem>
+#include <future>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -115,8 +116,27 @@ TEST_CASE("the I/O thread runs tasks in the order posted and waits for tickets",
 TEST_CASE("after a task fails the I/O thread skips the rest and rethrows at the next call", "[base][files]") {
     IoThread io;
     bool later_ran = false;
-    io.post([] { throw IoError("disk full"); });
+    // The failing task waits until the second is queued: otherwise the second
+    // post() may itself be "the next call" and rethrow (CI saw that race).
+    std::promise<void> both_posted;
+    std::shared_future<void> posted = both_posted.get_future().share();
+    io.post([posted] {
+        posted.wait();
+        throw IoError("disk full");
+    });
     io.post([&later_ran] { later_ran = true; });
+    both_posted.set_value();
     CHECK_THROWS_WITH(io.drain(), "disk full");
+    CHECK_FALSE(later_ran);
+    CHECK_NOTHROW(io.drain());  // reported once
+}
+
+TEST_CASE("a failure is reported once; later posts are skipped quietly", "[base][files]") {
+    IoThread io;
+    const std::uint64_t failing = io.post([] { throw IoError("disk full"); });
+    CHECK_THROWS_WITH(io.wait_for(failing), "disk full");
+    bool later_ran = false;
+    CHECK_NOTHROW(io.post([&later_ran] { later_ran = true; }));
+    io.drain();
     CHECK_FALSE(later_ran);
 }
