@@ -47,7 +47,7 @@ void add_report_command(CLI::App& root, CommandRunner& selected) {
     cmd->add_option("--sheet", options->report.sheet_count, "generations on the contact sheet")
         ->check(CLI::Range(0, 100));
     cmd->add_flag("--no-colour", [options](std::int64_t) { options->report.colour = false; },
-                  "the viewer's plants in plain green, not in colours from growth history");
+                  "the viewer's plants and the pictures in plain green, not in colours from growth history");
     select_on_pick(cmd, selected, options, run_report);
 }
 

@@ -4,6 +4,7 @@
 #include "core/base/errors.hpp"
 #include "core/base/parallel_for.hpp"
 #include "core/io/mesh_file_types.hpp"
+#include "report/corner_normals.hpp"
 
 #include <Eigen/Geometry>
 
@@ -47,6 +48,8 @@ void check_options(const RenderOptions& o) {
     if (o.columns < 1) throw std::invalid_argument("render columns must be >= 1, got " + std::to_string(o.columns));
     if (o.supersample < 1 || o.supersample > 4)
         throw std::invalid_argument("render supersample must be in [1, 4], got " + std::to_string(o.supersample));
+    if (!(o.crease_deg >= 0 && o.crease_deg <= 180))
+        throw std::invalid_argument("render crease angle must be in [0, 180] degrees, got " + std::to_string(o.crease_deg));
 }
 
 struct Camera {
@@ -182,10 +185,26 @@ struct SampleBuffer {
           depth(static_cast<std::size_t>(side) * side, std::numeric_limits<float>::infinity()) {}
 };
 
-// Fills the triangle's samples that are nearer than what is there.
-// `corner`: the colours at a, b, c, interpolated; null: `colour` everywhere.
+// What a triangle's corners carry: their colour, unlit, and their shading
+// normal's dot with the light (linear across the face, as the normal is).
+struct Corners {
+    std::array<Rgb, 3> colour;
+    std::array<Vec3, 3> normal;
+    std::array<double, 3> towards_light;
+};
+
+// Two-sided Lambert plus ambient for a normal n (not unit): |n.l| / |n|, so
+// faces seen from inside are lit like outside.
+float light_of(const Vec3& n, double n_dot_l) {
+    const double len = n.norm();
+    return kAmbient + kDiffuse * static_cast<float>(len > 0 ? std::min(1.0, std::abs(n_dot_l) / len) : 0);
+}
+
+// Fills the triangle's samples that are nearer than what is there, each lit
+// by the corners' normals interpolated to it (smooth shading) and coloured
+// by their colours interpolated.
 void raster_triangle(SampleBuffer& buf, const Eigen::Vector3d& a, const Eigen::Vector3d& b,
-                     const Eigen::Vector3d& c, const Rgb& colour, const std::array<Rgb, 3>* corner = nullptr) {
+                     const Eigen::Vector3d& c, const Corners& corner) {
     const auto edge = [](const Eigen::Vector3d& u, const Eigen::Vector3d& v, double x, double y) {
         return (v.x() - u.x()) * (y - u.y()) - (v.y() - u.y()) * (x - u.x());
     };
@@ -206,9 +225,11 @@ void raster_triangle(SampleBuffer& buf, const Eigen::Vector3d& a, const Eigen::V
             const std::size_t k = static_cast<std::size_t>(y) * buf.n + x;
             if (d < buf.depth[k]) {
                 buf.depth[k] = d;
-                buf.colour[k] = corner ? Rgb(static_cast<float>(w0) * (*corner)[0] + static_cast<float>(w1) * (*corner)[1] +
-                                             static_cast<float>(w2) * (*corner)[2])
-                                       : colour;
+                const float light = light_of(w0 * corner.normal[0] + w1 * corner.normal[1] + w2 * corner.normal[2],
+                                             w0 * corner.towards_light[0] + w1 * corner.towards_light[1] +
+                                                 w2 * corner.towards_light[2]);
+                buf.colour[k] = light * (static_cast<float>(w0) * corner.colour[0] + static_cast<float>(w1) * corner.colour[1] +
+                                         static_cast<float>(w2) * corner.colour[2]);
             }
         }
 }
@@ -240,20 +261,17 @@ Image render_framed(MeshView mesh, const Vec3& centre, const Frame& frame, const
         return Eigen::Vector3d(s * (0.5 * o.size + frame.scale * q.dot(cam.right)),
                                s * (frame.ground_row - frame.scale * q.dot(cam.up)), q.dot(cam.forward));
     };
-    for (const Face& f : mesh.faces) {
+    const std::vector<std::array<Vec3, 3>> normals = corner_normals(mesh, o.crease_deg);
+    for (std::size_t i = 0; i < mesh.faces.size(); ++i) {
+        const Face& f = mesh.faces[i];
         const Vec3 &a = mesh.positions[f[0]], &b = mesh.positions[f[1]], &c = mesh.positions[f[2]];
         if (!finite(a) || !finite(b) || !finite(c)) continue;
-        const Vec3 n = (b - a).cross(c - a);
-        const double len = n.norm();
-        // Two-sided Lambert: |n.l|, so faces seen from inside are lit like outside.
-        const double lambert = len > 0 ? std::abs(n.dot(cam.light)) / len : 0;
-        const float light = kAmbient + kDiffuse * static_cast<float>(lambert);
-        if (colours.empty()) {
-            raster_triangle(buf, project(a), project(b), project(c), kPlant * light);
-        } else {
-            const std::array<Rgb, 3> corner{colours[f[0]] * light, colours[f[1]] * light, colours[f[2]] * light};
-            raster_triangle(buf, project(a), project(b), project(c), kPlant, &corner);
+        Corners corner{{kPlant, kPlant, kPlant}, normals[i], {}};
+        for (int k = 0; k < 3; ++k) {
+            if (!colours.empty()) corner.colour[k] = colours[f[k]];
+            corner.towards_light[k] = normals[i][k].dot(cam.light);
         }
+        raster_triangle(buf, project(a), project(b), project(c), corner);
     }
 
     // Ground plate under what the mesh left uncovered: it is always behind a

@@ -1,7 +1,8 @@
 #pragma once
 // A small software rasteriser (no GPU, no OpenGL) for looking at grown meshes:
-// one fixed three-quarter view from above, flat Lambert + ambient shading with
-// two-sided lighting (|n.l|, so inside-out faces still read), a z-buffer,
+// one fixed three-quarter view from above, smooth Lambert + ambient shading
+// (normals interpolated across each face, creases kept: corner_normals.hpp)
+// with two-sided lighting (|n.l|, so inside-out faces still read), a z-buffer,
 // SxS supersampling, and a ground plate at z = 0 carrying the mesh's vertical
 // footprint as a shadow (the area the canopy fitness measures).
 //
@@ -26,6 +27,7 @@ struct RenderOptions {
     int supersample = 2;        // SxS samples per pixel (1..4), box-filtered
     double elevation_deg = 25;  // camera above the horizon
     double azimuth_deg = -35;   // camera around +z, from the front (-y) view
+    double crease_deg = 60;     // faces bending more than this from a neighbour keep a sharp edge (0: flat shading)
 };
 
 // An 8-bit RGB image, rows top to bottom, 3 bytes per pixel.

@@ -280,49 +280,6 @@ std::vector<std::uint64_t> viewer_meshes(Reporter& r, const RunInputs& in) {
     return exported;
 }
 
-// Pictures of exported generations, from the .obj beside each .glb (its exact
-// coordinates; the GLB holds floats): each mesh read once, each thumbnail drawn once.
-class Pictures {
-public:
-    Pictures(Reporter& r, const RunInputs& in, std::vector<std::uint64_t> exported)
-        : r_(r), in_(in), exported_(std::move(exported)) {}
-
-    const std::vector<std::uint64_t>& exported() const { return exported_; }
-
-    // The mesh of an exported generation; nullptr (and a note) if it cannot be read.
-    const MeshArrays* mesh(std::uint64_t generation) {
-        if (auto it = loaded_.find(generation); it != loaded_.end()) return it->second ? &*it->second : nullptr;
-        std::optional<MeshArrays>& mesh = loaded_[generation];
-        try {
-            mesh = read_mesh(fs::path(in_.meshes.at(generation)).replace_extension(".obj").string());
-        } catch (const std::exception& e) {
-            r_.note(std::string("no picture of generation ") + std::to_string(generation) + ": " + e.what());
-        }
-        return mesh ? &*mesh : nullptr;
-    }
-
-    // thumbs/gen_NNNN.png of an exported generation, or null.
-    json thumb(std::uint64_t generation) {
-        if (!std::binary_search(exported_.begin(), exported_.end(), generation)) return json();
-        const std::string name = "thumbs/" + export_name(generation) + ".png";
-        if (thumbs_.count(generation)) return name;
-        const MeshArrays* m = mesh(generation);
-        if (!m) return json();
-        RenderOptions render;
-        render.size = r_.options.thumb_size;
-        write_png(render_mesh(m->view(), render), (r_.out / name).string());
-        thumbs_.insert(generation);
-        return name;
-    }
-
-private:
-    Reporter& r_;
-    const RunInputs& in_;
-    std::vector<std::uint64_t> exported_;
-    std::map<std::uint64_t, std::optional<MeshArrays>> loaded_;
-    std::set<std::uint64_t> thumbs_;
-};
-
 // The growth of the run's config, made once when first needed; nullptr
 // (and a note) where its seed mesh cannot be made.
 class LazyGrowth {
@@ -342,6 +299,68 @@ private:
     Reporter& r_;
     const ExperimentConfig& config_;
     std::optional<GenomeGrower> grower_;
+};
+
+// Pictures of exported generations, from the .obj beside each .glb (its exact
+// coordinates; the GLB holds floats) in colours from growth history (its
+// .genome.json grown again) unless --no-colour: each mesh read and coloured
+// once, each thumbnail drawn once.
+class Pictures {
+public:
+    Pictures(Reporter& r, const RunInputs& in, std::vector<std::uint64_t> exported, LazyGrowth& growth)
+        : r_(r), in_(in), exported_(std::move(exported)), growth_(growth) {}
+
+    const std::vector<std::uint64_t>& exported() const { return exported_; }
+
+    // The mesh of an exported generation; nullptr (and a note) if it cannot be read.
+    const MeshArrays* mesh(std::uint64_t generation) {
+        if (auto it = loaded_.find(generation); it != loaded_.end()) return it->second ? &*it->second : nullptr;
+        std::optional<MeshArrays>& mesh = loaded_[generation];
+        try {
+            mesh = read_mesh(fs::path(in_.meshes.at(generation)).replace_extension(".obj").string());
+        } catch (const std::exception& e) {
+            r_.note(std::string("no picture of generation ") + std::to_string(generation) + ": " + e.what());
+        }
+        return mesh ? &*mesh : nullptr;
+    }
+
+    // The colours of an exported generation's mesh; empty (the plain green)
+    // with --no-colour, or with a note where its genome cannot be grown.
+    const std::vector<float>& colours(std::uint64_t generation) {
+        auto [it, fresh] = colours_.try_emplace(generation);
+        const MeshArrays* m = fresh && r_.options.colour ? mesh(generation) : nullptr;
+        const GenomeGrower* grower = m ? growth_() : nullptr;
+        if (grower) try {
+                const fs::path genome = fs::path(in_.meshes.at(generation)).replace_extension(".genome.json");
+                it->second = export_colours(*grower, genome, m->positions.size());
+            } catch (const std::exception& e) {
+                r_.note("generation " + std::to_string(generation) + " drawn in plain green: " + e.what());
+            }
+        return it->second;
+    }
+
+    // thumbs/gen_NNNN.png of an exported generation, or null.
+    json thumb(std::uint64_t generation) {
+        if (!std::binary_search(exported_.begin(), exported_.end(), generation)) return json();
+        const std::string name = "thumbs/" + export_name(generation) + ".png";
+        if (thumbs_.count(generation)) return name;
+        const MeshArrays* m = mesh(generation);
+        if (!m) return json();
+        RenderOptions render;
+        render.size = r_.options.thumb_size;
+        write_png(render_mesh(m->view(), render, colours(generation)), (r_.out / name).string());
+        thumbs_.insert(generation);
+        return name;
+    }
+
+private:
+    Reporter& r_;
+    const RunInputs& in_;
+    std::vector<std::uint64_t> exported_;
+    std::map<std::uint64_t, std::optional<MeshArrays>> loaded_;
+    std::set<std::uint64_t> thumbs_;
+    std::map<std::uint64_t, std::vector<float>> colours_;
+    LazyGrowth& growth_;
 };
 
 // The best genome's growth animation into growth.glb and growth.js.
@@ -409,12 +428,14 @@ void sheet_json(Reporter& r, const RunInputs& in, Pictures& pictures) {
     if (pictures.exported().empty() || r.options.sheet_count <= 0) return;
     const auto& best_column = in.history.columns.at("best");
     std::vector<MeshArrays> sheet_meshes;
+    std::vector<std::vector<float>> sheet_colours;
     std::vector<std::string> captions;
     json generations = json::array();
     for (std::uint64_t g : spread(pictures.exported(), static_cast<std::size_t>(r.options.sheet_count))) {
         const MeshArrays* mesh = pictures.mesh(g);
         if (!mesh) continue;
         sheet_meshes.push_back(*mesh);
+        sheet_colours.push_back(pictures.colours(g));
         char caption[64];
         const auto& f = g < in.history.rows ? best_column[g] : std::optional<double>();
         std::snprintf(caption, sizeof caption, f ? "gen %llu  %.4g" : "gen %llu", static_cast<unsigned long long>(g),
@@ -426,7 +447,7 @@ void sheet_json(Reporter& r, const RunInputs& in, Pictures& pictures) {
     RenderOptions render;
     render.size = 160;
     render.columns = 6;
-    render_contact_sheet(sheet_meshes, captions, (r.out / "contact.png").string(), render);
+    render_contact_sheet(sheet_meshes, captions, (r.out / "contact.png").string(), render, sheet_colours);
     r.data["sheet"] = {{"image", "contact.png"}, {"generations", std::move(generations)}};
 }
 
@@ -434,8 +455,8 @@ void sheet_json(Reporter& r, const RunInputs& in, Pictures& pictures) {
 void write_report_files(Reporter& r, const fs::path& run_dir, const RunInputs& in) {
     for (const char* sub : {"meshes", "thumbs", "elites", "lib"}) make_dir(r.out / sub);
     summary_json(r.data, run_dir, in);
-    Pictures pictures(r, in, viewer_meshes(r, in));
     LazyGrowth growth(r, in.config);
+    Pictures pictures(r, in, viewer_meshes(r, in), growth);
     best_json(r, in, pictures, growth);
     sheet_json(r, in, pictures);
     const MapElitesState* elites = elites_state(*in.state.search);

@@ -20,7 +20,7 @@ struct ReportOptions {
     int sheet_count = 12;           // contact sheet: at most this many exported generations
     int thumb_size = 128;           // ancestry thumbnails, pixels
     int animation_frames = 50;      // frames of the best genome's growth, at most steps + 1 (0 = no animation)
-    bool colour = true;             // the viewer's plants in colours from growth history (COLOR_0)
+    bool colour = true;             // the viewer's plants (COLOR_0), thumbnails and sheet in colours from growth history
 };
 
 struct ReportSummary {

@@ -6,6 +6,7 @@
 #include "engine/plant_lods.hpp"
 #include "core/io/mesh_io.hpp"
 #include "run/exports/plant_exports.hpp"
+#include "run/genome_source.hpp"
 
 namespace morphogen {
 
@@ -38,6 +39,16 @@ ReportPlant grow_report_plant(const ExperimentConfig& config, const GenomeGrower
         plant.why_plain = e.what();
     }
     return plant;
+}
+
+std::vector<float> export_colours(const GenomeGrower& grower, const std::filesystem::path& genome_file,
+                                  std::size_t vertices) {
+    const Genome genome = load_genome_for(grower.layers(), genome_file.string());
+    const DatedGrowth dated = grow_dated(grower, genome.params);
+    if (static_cast<std::size_t>(dated.state.mesh.num_vertices()) != vertices)
+        throw MeshError(genome_file.string() + ": grows " + std::to_string(dated.state.mesh.num_vertices()) +
+                        " vertices, its export has " + std::to_string(vertices));
+    return growth_colours(dated.state, dated.birth_steps, grower.params());
 }
 
 }  // namespace morphogen

@@ -7,8 +7,10 @@
 #include "core/growth/genome_grower.hpp"
 #include "run/config/experiment_config.hpp"
 
+#include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace morphogen {
 
@@ -37,5 +39,13 @@ struct ReportPlant {
 // the viewer draws. Throws what growth and encoding throw.
 ReportPlant grow_report_plant(const ExperimentConfig& config, const GenomeGrower& grower,
                               const Individual& individual, std::optional<std::uint64_t> cell, bool colour = true);
+
+// The colours from growth history (RGBA, 4 per vertex, as render_mesh takes
+// them) of a run's exported plant of `vertices` vertices: its genome file
+// (the <stem>.genome.json beside each export) grown again with `grower`.
+// Throws what loading and growth throw, and MeshError when the grown plant
+// does not have `vertices` vertices (a genome that is not the export's).
+std::vector<float> export_colours(const GenomeGrower& grower, const std::filesystem::path& genome_file,
+                                  std::size_t vertices);
 
 }  // namespace morphogen

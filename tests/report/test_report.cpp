@@ -11,9 +11,13 @@
 #include "tests/app/evolve_test_support.hpp"
 
 #include <catch2/catch.hpp>
+#define STB_IMAGE_STATIC
+#define STB_IMAGE_IMPLEMENTATION
+#include <stb/stb_image.h>
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <map>
 #include <string>
@@ -79,6 +83,26 @@ nlohmann::json script_gltf(const fs::path& script) {
     return nlohmann::json::parse(glb.substr(20, length));
 }
 
+// Pixels of a PNG in bark's hues (red to orange, 0-50 degrees, saturation
+// above 0.15): never in the plain green, the grey plate or the captions.
+int bark_pixels(const fs::path& png) {
+    const std::string bytes = read_text(png);
+    int w = 0, h = 0, channels = 0;
+    unsigned char* rgb = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(bytes.data()),
+                                               static_cast<int>(bytes.size()), &w, &h, &channels, 3);
+    REQUIRE(rgb != nullptr);
+    int bark = 0;
+    for (int i = 0; i < w * h; ++i) {
+        const double r = rgb[3 * i] / 255.0, g = rgb[3 * i + 1] / 255.0, b = rgb[3 * i + 2] / 255.0;
+        const double hi = std::max({r, g, b}), lo = std::min({r, g, b});
+        if (hi <= 0 || (hi - lo) / hi < 0.15 || hi != r) continue;
+        const double hue = 60.0 * (g - b) / (hi - lo);
+        bark += hue >= 0 && hue <= 50;
+    }
+    stbi_image_free(rgb);
+    return bark;
+}
+
 }  // namespace
 
 TEST_CASE("report of a small GA run: history, meshes, ancestry, pictures, three.js", "[app][report]") {
@@ -138,6 +162,36 @@ TEST_CASE("report of a small GA run: history, meshes, ancestry, pictures, three.
     CHECK(report_data(out)["sheet"].is_null());
     CHECK_FALSE(fs::exists(out / "growth.glb"));
     CHECK_FALSE(fs::exists(out / "contact.png"));
+}
+
+TEST_CASE("the report's thumbnails and contact sheet are in colours from growth history; --no-colour in green",
+          "[app][report][colour]") {
+    TempDir tmp("report_colour");
+    const fs::path run = make_run(tmp, exporting_config(3, 1));
+    const auto bark = [&](const fs::path& out, std::vector<int>& thumbs) {
+        const nlohmann::json d = report_data(out);
+        for (const auto& a : d["ancestry"])
+            if (!a["thumb"].is_null()) thumbs.push_back(bark_pixels(out / a["thumb"].get<std::string>()));
+        return bark_pixels(out / "contact.png");
+    };
+    std::vector<int> coloured, plain;
+    REQUIRE(run_morphogen("report " + q(run) + " -o " + q(tmp.path / "c")).code == 0);
+    const int sheet = bark(tmp.path / "c", coloured);
+    REQUIRE(run_morphogen("report " + q(run) + " --no-colour -o " + q(tmp.path / "p")).code == 0);
+    CHECK(bark(tmp.path / "p", plain) == 0);
+    INFO("contact sheet: " << sheet << " bark pixels");
+    CHECK(sheet > 100);
+    REQUIRE(coloured.size() >= 2);
+    REQUIRE(plain.size() == coloured.size());
+    for (std::size_t i = 0; i < coloured.size(); ++i) {
+        CHECK(coloured[i] > 10);
+        CHECK(plain[i] == 0);
+    }
+    // An export whose genome file is gone: drawn in the plain green, with a note.
+    fs::remove(run / "best/gen_0000.genome.json");
+    const CliResult gone = run_morphogen("report " + q(run) + " -o " + q(tmp.path / "g"));
+    REQUIRE(gone.code == 0);
+    CHECK_THAT(gone.output, Catch::Contains("generation 0 drawn in plain green") && Catch::Contains("gen_0000.genome.json"));
 }
 
 TEST_CASE("without three.js the report has no viewer, says why, and loads nothing missing", "[app][report]") {
