@@ -3,13 +3,53 @@
 
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <stdexcept>
+#include <tuple>
 
 namespace morphogen {
 
-BodyInside::BodyInside(MeshView mesh, double column) : mesh_(mesh), column_(column) {
+namespace {
+
+struct Entry {
+    std::pair<long long, long long> column;
+    int face;
+};
+
+// In order of column, then face. A counting sort over the grid of columns
+// the faces touch where that grid is not much larger than the list (a plant:
+// about 5 entries a face over some 1,000 columns); a comparison sort else.
+void sort_by_column(std::vector<Entry>& entries) {
+    if (entries.empty()) return;
+    long long lo_i = entries[0].column.first, hi_i = lo_i, lo_j = entries[0].column.second, hi_j = lo_j;
+    for (const Entry& e : entries) {
+        lo_i = std::min(lo_i, e.column.first), hi_i = std::max(hi_i, e.column.first);
+        lo_j = std::min(lo_j, e.column.second), hi_j = std::max(hi_j, e.column.second);
+    }
+    const double cells = (static_cast<double>(hi_i) - lo_i + 1) * (static_cast<double>(hi_j) - lo_j + 1);
+    if (!(cells <= 8.0 * static_cast<double>(entries.size()) + 4096)) {
+        std::ranges::sort(entries, [](const Entry& a, const Entry& b) {
+            return std::tie(a.column, a.face) < std::tie(b.column, b.face);
+        });
+        return;
+    }
+    const long long rows = hi_j - lo_j + 1;
+    const auto index = [&](const Entry& e) {
+        return static_cast<std::size_t>((e.column.first - lo_i) * rows + (e.column.second - lo_j));
+    };
+    std::vector<std::size_t> start(static_cast<std::size_t>(cells) + 1, 0);
+    for (const Entry& e : entries) ++start[index(e) + 1];
+    for (std::size_t c = 1; c < start.size(); ++c) start[c] += start[c - 1];
+    std::vector<Entry> sorted(entries.size());
+    for (const Entry& e : entries) sorted[start[index(e)]++] = e;  // entries come in face order: kept within a column
+    entries = std::move(sorted);
+}
+
+}  // namespace
+
+BodyInside::BodyInside(MeshView mesh, double column) : column_(column) {
     if (!(column > 0.0) || !std::isfinite(column)) throw std::invalid_argument("BodyInside: column must be positive");
+    std::vector<Entry> entries;
+    entries.reserve(2 * mesh.faces.size());
     for (std::size_t f = 0; f < mesh.faces.size(); ++f) {
         double lo_x = INFINITY, hi_x = -INFINITY, lo_y = INFINITY, hi_y = -INFINITY;
         for (const int v : mesh.faces[f]) {
@@ -18,28 +58,33 @@ BodyInside::BodyInside(MeshView mesh, double column) : mesh_(mesh), column_(colu
             lo_y = std::min(lo_y, p.y()), hi_y = std::max(hi_y, p.y());
         }
         for (long long i = cell(lo_x); i <= cell(hi_x); ++i)
-            for (long long j = cell(lo_y); j <= cell(hi_y); ++j) columns_[{i, j}].push_back(static_cast<int>(f));
+            for (long long j = cell(lo_y); j <= cell(hi_y); ++j) entries.push_back({{i, j}, static_cast<int>(f)});
+    }
+    sort_by_column(entries);
+    columns_.reserve(entries.size());
+    triangles_.reserve(entries.size());
+    for (const Entry& e : entries) {
+        const Face& face = mesh.faces[static_cast<std::size_t>(e.face)];
+        const Vec3 &a = mesh.positions[static_cast<std::size_t>(face[0])],
+                   &b = mesh.positions[static_cast<std::size_t>(face[1])],
+                   &c = mesh.positions[static_cast<std::size_t>(face[2])];
+        // Twice the signed area of the face's x-y projection; a vertical face
+        // (0) is grazed by every vertical ray and never counts, so it is left out.
+        const double area = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
+        if (area == 0.0) continue;
+        columns_.push_back(e.column);
+        triangles_.push_back({a, b, c, area});
     }
 }
 
 long long BodyInside::cell(double x) const { return static_cast<long long>(std::floor(x / column_)); }
 
-std::size_t BodyInside::ColumnHash::operator()(const Column& c) const noexcept {
-    return std::hash<long long>{}(c.first) * 0x9E3779B97F4A7C15ull + std::hash<long long>{}(c.second);
-}
-
 int BodyInside::winding(const Vec3& p) const {
-    const auto found = columns_.find({cell(p.x()), cell(p.y())});
-    if (found == columns_.end()) return 0;
+    const auto [first, last] = std::equal_range(columns_.begin(), columns_.end(), Column{cell(p.x()), cell(p.y())});
     int winding = 0;
-    for (const int f : found->second) {
-        const Face& face = mesh_.faces[static_cast<std::size_t>(f)];
-        const Vec3& a = mesh_.positions[static_cast<std::size_t>(face[0])];
-        const Vec3& b = mesh_.positions[static_cast<std::size_t>(face[1])];
-        const Vec3& c = mesh_.positions[static_cast<std::size_t>(face[2])];
+    for (auto it = first; it != last; ++it) {
+        const auto& [a, b, c, area] = triangles_[static_cast<std::size_t>(it - columns_.begin())];
         // Barycentric coordinates of (p.x, p.y) in the face's x-y projection.
-        const double area = (b.x() - a.x()) * (c.y() - a.y()) - (c.x() - a.x()) * (b.y() - a.y());
-        if (area == 0.0) continue;  // a vertical face: the ray grazes it
         const double u = ((b.x() - p.x()) * (c.y() - p.y()) - (c.x() - p.x()) * (b.y() - p.y())) / area;
         const double v = ((c.x() - p.x()) * (a.y() - p.y()) - (a.x() - p.x()) * (c.y() - p.y())) / area;
         const double w = 1.0 - u - v;

@@ -6,11 +6,11 @@
 // where it points down. For a closed, outward-facing surface this is the
 // winding number: 1 inside, 0 outside, 2 where folds of the surface overlap.
 // Faces are bucketed by the columns their x-y bounds touch, so a query reads
-// only the faces above and below its point.
+// only the faces above and below its point: a sorted list of (column, face)
+// with each face's corners beside it, searched by bisection (no hash map of
+// lists to allocate, and a query reads one contiguous run).
 #include "core/mesh/mesh.hpp"
 
-#include <cstdint>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -18,7 +18,7 @@ namespace morphogen {
 
 class BodyInside {
 public:
-    // `mesh` must outlive this. `column` is the edge of the x-y buckets (> 0).
+    // `column` is the edge of the x-y buckets (> 0). The faces are copied.
     BodyInside(MeshView mesh, double column);
 
     // The signed count of faces the upward ray from p crosses, as above.
@@ -27,14 +27,16 @@ public:
 
 private:
     using Column = std::pair<long long, long long>;
-    struct ColumnHash {
-        std::size_t operator()(const Column& c) const noexcept;
-    };
     long long cell(double x) const;
-    MeshView mesh_;
     double column_;
-    // Exact keys: a face listed twice under one key would be counted twice.
-    std::unordered_map<Column, std::vector<int>, ColumnHash> columns_;
+    struct Triangle {
+        Vec3 a, b, c;
+        double area;  // twice the signed area of its x-y projection, not 0
+    };
+    // Sorted by column, then face; one entry per column a face touches, so
+    // no face is counted twice for one point.
+    std::vector<Column> columns_;
+    std::vector<Triangle> triangles_;  // the face of each entry
 };
 
 }  // namespace morphogen

@@ -66,18 +66,13 @@ std::vector<std::uint8_t> leaf_texture_rgba(int size) {
     return pixels;
 }
 
-const std::string& leaf_texture_png() {
-    // Drawn and encoded once a process (a thread-safe static): a pack or an
-    // archive of many plants embeds the same bytes in each.
-    static const std::string png = [] {
-        const std::vector<std::uint8_t> pixels = leaf_texture_rgba(kLeafTextureSize);
-        std::string bytes;
-        if (!stbi_write_png_to_func(append_bytes, &bytes, kLeafTextureSize, kLeafTextureSize, 4, pixels.data(),
-                                    kLeafTextureSize * 4))
-            throw IoError("leaf texture: cannot encode PNG");
-        return bytes;
-    }();
-    return png;
+std::string encode_leaf_texture_png() {
+    const std::vector<std::uint8_t> pixels = leaf_texture_rgba(kLeafTextureSize);
+    std::string bytes;
+    if (!stbi_write_png_to_func(append_bytes, &bytes, kLeafTextureSize, kLeafTextureSize, 4, pixels.data(),
+                                kLeafTextureSize * 4))
+        throw IoError("leaf texture: cannot encode PNG");
+    return bytes;
 }
 
 }  // namespace morphogen

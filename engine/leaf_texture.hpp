@@ -14,7 +14,12 @@ inline constexpr int kLeafTextureSize = 128;  // a power of two: mipmaps in ever
 // blade with a midrib and side veins on a short stalk. The same bytes every call.
 std::vector<std::uint8_t> leaf_texture_rgba(int size = kLeafTextureSize);
 
-// leaf_texture_rgba() as PNG bytes (stb_image_write), made once a process.
+// leaf_texture_rgba() as PNG bytes (stb_image_write), encoded every call.
+std::string encode_leaf_texture_png();
+
+// The PNG bytes every GLB with leaves embeds: encode_leaf_texture_png()'s,
+// made when morphogen is built (leaf_texture_embed.cpp writes them into a
+// source file), so an export pays nothing to draw or encode them.
 const std::string& leaf_texture_png();
 
 }  // namespace morphogen

@@ -158,6 +158,15 @@ TEST_CASE("BodyInside agrees with the generalised winding number", "[leaves]") {
         const BodyInside inside(body, 0.3);
         Vec3 lo = body.positions[0], hi = lo;
         for (const Vec3& p : body.positions) lo = lo.cwiseMin(p), hi = hi.cwiseMax(p);
+        // Two copies far apart: the columns between them are empty, so
+        // BodyInside sorts its list rather than counting into a grid.
+        const Vec3 away(1000.0 * (hi - lo).maxCoeff(), 0.0, 0.0);
+        MeshArrays twins = leafy.placed.mesh;
+        const int n = static_cast<int>(twins.positions.size());
+        for (int v = 0; v < n; ++v) twins.positions.push_back(twins.positions[static_cast<std::size_t>(v)] + away);
+        for (std::size_t f = 0, faces = twins.faces.size(); f < faces; ++f)
+            twins.faces.push_back({twins.faces[f][0] + n, twins.faces[f][1] + n, twins.faces[f][2] + n});
+        const BodyInside both(twins.view(), 0.3);
         RandomStream stream(11, 0);
         std::size_t agree = 0, in = 0;
         constexpr int kPoints = 400;
@@ -166,7 +175,7 @@ TEST_CASE("BodyInside agrees with the generalised winding number", "[leaves]") {
             for (int k = 0; k < 3; ++k) r[k] = stream.uniform();
             const Vec3 p = lo + (hi - lo).cwiseProduct(r);
             const int exact = static_cast<int>(std::lround(winding_number(body, p)));
-            agree += inside.winding(p) == exact;
+            agree += inside.winding(p) == exact && both.winding(p) == exact && both.winding(p + away) == exact;
             in += exact > 0;
         }
         INFO("mode " << static_cast<int>(mode) << ": " << in << " of " << kPoints << " points inside");
@@ -235,7 +244,7 @@ TEST_CASE("leaf cards: refused sizes and densities", "[leaves]") {
                     std::invalid_argument);
 }
 
-TEST_CASE("leaf texture: a leaf with alpha, and its PNG decodes to it", "[leaves]") {
+TEST_CASE("leaf texture: a leaf with alpha, and its embedded PNG decodes to it", "[leaves]") {
     const std::vector<std::uint8_t> rgba = leaf_texture_rgba();
     const int n = kLeafTextureSize;
     REQUIRE(rgba.size() == static_cast<std::size_t>(n * n * 4));
@@ -256,6 +265,7 @@ TEST_CASE("leaf texture: a leaf with alpha, and its PNG decodes to it", "[leaves
     REQUIRE(decoded != nullptr);
     CHECK(std::equal(rgba.begin(), rgba.end(), decoded));
     stbi_image_free(decoded);
+    CHECK(png == encode_leaf_texture_png());  // the bytes the build embedded are the encoder's
 }
 
 TEST_CASE("leaf GLB: a second primitive with the leaf material, its texture and wind", "[leaves]") {
