@@ -46,10 +46,8 @@ Inserted SteadyStateGA::insert(Individual& child, std::string&) {
 }
 
 double SteadyStateGA::export_floor() const {
-    double floor = -std::numeric_limits<double>::infinity();
-    for (const Individual& member : state_.population)
-        if (member.valid()) floor = std::max(floor, member.fitness);
-    return floor;
+    const Individual* top = top_ranked(state_.population);
+    return top != nullptr ? top->fitness : -std::numeric_limits<double>::infinity();
 }
 
 }  // namespace morphogen

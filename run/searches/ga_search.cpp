@@ -20,12 +20,7 @@ public:
     void fill(HistoryRow& row, const Inserted&) const override {
         fill_statistics(row, summarize(search_.state().population));
     }
-    const Individual* exported() const override {
-        const Individual* best = nullptr;
-        for (const Individual& member : search_.state().population)
-            if (best == nullptr || ranks_above(member, *best)) best = &member;
-        return best != nullptr && best->valid() ? best : nullptr;
-    }
+    const Individual* exported() const override { return top_ranked(search_.state().population); }
     std::unique_ptr<SearchState> save() const override { return std::make_unique<GaSearchState>(search_.state()); }
 };
 
@@ -108,11 +103,7 @@ SearchKind ga_search_kind() {
                 return std::make_unique<GaSearchState>(ga_state_from_json(stored, config.evolution, dimension, genomes));
             },
             [](nlohmann::json& stored, const std::function<void(nlohmann::json&, const std::string&)>& genome) {
-                if (!stored.is_object()) return;
-                if (stored.contains("population") && stored["population"].is_array())
-                    for (std::size_t i = 0; i < stored["population"].size(); ++i)
-                        genome(stored["population"][i], "ga.population[" + std::to_string(i) + "]");
-                if (stored.contains("best")) genome(stored["best"], "ga.best");
+                each_population_genome(stored, "ga", genome);
             }};
 }
 
