@@ -32,17 +32,10 @@ Individual SteadyStateGA::conceive(std::uint64_t birth) const {
 }
 
 Inserted SteadyStateGA::insert(Individual& child, std::string&) {
-    Inserted what;
     if (!child.valid()) ++state_.invalid_in_generation;
     keep_best(state_.best, child);
     (void)insert_child(state_.population, child, static_cast<std::size_t>(params_.population));
-    ++state_.births;
-    if (at_generation_end()) {
-        what.ends_generation = true;
-        what.generation_invalid = state_.invalid_in_generation;
-        state_.invalid_in_generation = 0;
-    }
-    return what;
+    return count_birth(state_.births, state_.invalid_in_generation, population());
 }
 
 double SteadyStateGA::export_floor() const {

@@ -117,14 +117,7 @@ Inserted Nslc::insert(Individual& child, std::string& error) {
         }
         rescore();
     }
-    ++state_.births;
-    Inserted what;
-    if (at_generation_end()) {
-        what.ends_generation = true;
-        what.generation_invalid = state_.invalid_in_generation;
-        state_.invalid_in_generation = 0;
-    }
-    return what;
+    return count_birth(state_.births, state_.invalid_in_generation, population());
 }
 
 double Nslc::export_floor() const {

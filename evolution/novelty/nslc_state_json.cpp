@@ -16,12 +16,6 @@ using checked_json::read_finite_array;
 using checked_json::read_u64;
 
 namespace {
-json member_to_json(const Individual& ind, GenomeBlobWriter* genomes) {
-    json out = individual_to_json(ind, genomes);
-    out["descriptors"] = ind.descriptors;
-    return out;
-}
-
 std::vector<double> read_descriptors(const json& object, std::size_t dimensions, const std::string& path) {
     std::vector<double> out = read_finite_array(member(object, "descriptors", path), path + ".descriptors");
     if (out.size() != dimensions)
@@ -42,17 +36,15 @@ Individual read_member(const json& object, std::size_t dimension, std::size_t di
 }  // namespace
 
 json nslc_state_to_json(const NslcState& state, GenomeBlobWriter* genomes) {
-    json out = json::object();
-    out["births"] = state.births;
-    out["invalid_in_generation"] = state.invalid_in_generation;
-    json population = json::array();
-    for (const Individual& ind : state.population) population.push_back(member_to_json(ind, genomes));
-    out["population"] = std::move(population);
+    // The GA's form, each individual with its descriptors, and the archive.
+    json out = ga_state_to_json(GaState{state.births, state.population, state.best, state.invalid_in_generation}, genomes);
+    for (std::size_t i = 0; i < state.population.size(); ++i)
+        out["population"][i]["descriptors"] = state.population[i].descriptors;
+    if (state.best) out["best"]["descriptors"] = state.best->descriptors;
     json archive = json::array();
     for (const Individual& point : state.archive)
         archive.push_back(json{{"id", point.id}, {"fitness", point.fitness}, {"descriptors", point.descriptors}});
     out["archive"] = std::move(archive);
-    out["best"] = state.best ? member_to_json(*state.best, genomes) : json(nullptr);
     return out;
 }
 

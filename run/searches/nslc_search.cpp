@@ -1,8 +1,6 @@
 #include "run/searches/nslc_search.hpp"
 
-#include "evolution/ga/population_stats.hpp"
 #include "evolution/novelty/nslc_state_json.hpp"
-#include "evolution/operators.hpp"
 #include "run/config/experiment_config.hpp"
 #include "run/persistence/checkpoint_checks.hpp"
 
@@ -10,35 +8,6 @@
 #include <string>
 
 namespace morphogen {
-
-namespace {
-class NslcSearch final : public SearchOver<Nslc> {
-public:
-    NslcSearch(const ExperimentConfig& c, Problem& problem, NslcState state)
-        : SearchOver(c.evolution, c.novelty, c.qd.descriptors, c.run.seed, problem, std::move(state)) {}
-
-    void fill(HistoryRow& row, const Inserted&) const override {
-        fill_statistics(row, summarize(search_.state().population));
-    }
-    const Individual* exported() const override { return top_ranked(search_.state().population); }
-    std::unique_ptr<SearchState> save() const override { return std::make_unique<NslcSearchState>(search_.state()); }
-};
-}  // namespace
-
-SearchView NslcSearchState::view() const {
-    SearchView v;
-    v.births = state.births;
-    v.best = &state.best;
-    for (const Individual& member : state.population) v.members.push_back(&member);
-    v.members_name = "nslc.population";
-    v.members_source = "the population it holds";
-    v.invalid_in_generation = state.invalid_in_generation;
-    return v;
-}
-
-void NslcSearchState::fill(HistoryRow& row, const ExperimentConfig&) const {
-    fill_statistics(row, summarize(state.population));
-}
 
 nlohmann::json NslcSearchState::to_json(GenomeBlobWriter* genomes) const { return nslc_state_to_json(state, genomes); }
 
@@ -62,7 +31,9 @@ void NslcSearchState::check_pending_parents(std::span<const Individual> pending,
 }
 
 std::unique_ptr<RunSearch> NslcSearchState::start(const ExperimentConfig& config, Problem& problem) {
-    return std::make_unique<NslcSearch>(config, problem, std::move(state));
+    return std::make_unique<PopulationSearch<Nslc, NslcSearchState>>(config.evolution, config.novelty,
+                                                                      config.qd.descriptors, config.run.seed, problem,
+                                                                      std::move(state));
 }
 
 SearchKind nslc_search_kind() {

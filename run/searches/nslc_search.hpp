@@ -4,22 +4,16 @@
 // exports the population's fittest member (as the GA does), and its state is
 // stored under "nslc" (evolution/novelty/nslc_state_json.hpp).
 #include "evolution/novelty/nslc.hpp"
-#include "run/searches/run_search.hpp"
-#include "run/searches/search_state.hpp"
+#include "run/searches/population_search_state.hpp"
 
 namespace morphogen {
 
-class NslcSearchState final : public SearchState {
+class NslcSearchState final : public PopulationSearchState<NslcState, NslcSearchState> {
 public:
-    explicit NslcSearchState(NslcState state = {}) : state(std::move(state)) {}
-    NslcState state;
+    using PopulationSearchState::PopulationSearchState;
+    static constexpr bool first_births = false;  // invalid births take no slot
 
-    std::unique_ptr<SearchState> clone() const override { return std::make_unique<NslcSearchState>(state); }
     const char* key() const override { return "nslc"; }
-    std::uint64_t births() const override { return state.births; }
-    const std::optional<Individual>& best() const override { return state.best; }
-    SearchView view() const override;
-    void fill(HistoryRow& row, const ExperimentConfig& config) const override;
     nlohmann::json to_json(GenomeBlobWriter* genomes) const override;
     // Every archive point as lineage.csv records its birth: valid, with the
     // same fitness and descriptors.
