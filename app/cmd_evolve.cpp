@@ -107,7 +107,7 @@ int run_evolve(const EvolveOptions& o) {
 void add_evolve_command(CLI::App& root, CommandRunner& selected, EvaluatorFactory evaluators) {
     auto options = std::make_shared<EvolveOptions>();
     options->evaluators = std::move(evaluators);
-    CLI::App* cmd = root.add_subcommand("evolve", "Run the search of a config (the GA or MAP-Elites) into a new run directory");
+    CLI::App* cmd = root.add_subcommand("evolve", "Run the search of a config (the GA, MAP-Elites or novelty search) into a new run directory");
     cmd->add_option("config", options->config, "experiment config (JSON)")->required()->check(CLI::ExistingFile);
     cmd->add_option("--out", options->out, "run directory (default runs/<name>-<YYYYmmdd-HHMMSS>)");
     options->seed_option = cmd->add_option("--seed", options->seed, "replaces run.seed");

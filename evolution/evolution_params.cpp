@@ -2,10 +2,32 @@
 
 namespace morphogen {
 
-GaParams read_evolution_params(ObjectReader& reader, Algorithm* algorithm) {
+namespace {
+// The novelty_* keys: read for "nslc" only, so other configs resolve to the
+// same bytes as before they existed.
+NoveltyParams read_novelty_params(ObjectReader& reader, bool nslc) {
+    NoveltyParams n;
+    if (!nslc) {
+        for (const char* key : {"novelty_k", "novelty_archive", "novelty_archive_rate"})
+            if (reader.raw(key) != nullptr)
+                reader.issues().add(reader.path_of(key), "used only when evolution.algorithm is \"nslc\"");
+        return n;
+    }
+    n.k = static_cast<int>(reader.integer("novelty_k", n.k, 1, 10'000));
+    n.archive = static_cast<std::uint64_t>(
+        reader.integer("novelty_archive", static_cast<long long>(n.archive), 0, 1'000'000));
+    n.archive_rate = reader.number("novelty_archive_rate", n.archive_rate, 0.0, 1.0);
+    return n;
+}
+}  // namespace
+
+GaParams read_evolution_params(ObjectReader& reader, Algorithm* algorithm, NoveltyParams* novelty) {
     GaParams p;
-    const std::string name = reader.choice("algorithm", "steady_state", {"steady_state", "map_elites"});
-    if (algorithm != nullptr) *algorithm = name == "map_elites" ? Algorithm::map_elites : Algorithm::steady_state;
+    const std::string name = reader.choice("algorithm", "steady_state", {"steady_state", "map_elites", "nslc"});
+    const Algorithm chosen = name == "map_elites" ? Algorithm::map_elites
+                             : name == "nslc"     ? Algorithm::nslc
+                                                  : Algorithm::steady_state;
+    if (algorithm != nullptr) *algorithm = chosen;
     p.population = static_cast<int>(reader.integer("population", p.population, 2, 1'000'000));
     p.tournament = static_cast<int>(reader.integer("tournament", p.tournament, 1, 1000));
     p.crossover = reader.number("crossover", p.crossover, 0.0, 1.0);
@@ -29,6 +51,8 @@ GaParams read_evolution_params(ObjectReader& reader, Algorithm* algorithm) {
         reader.drop_resolved("lag");
     }
     p.init_range = reader.number("init_range", p.init_range, 0.0, 1000.0);
+    const NoveltyParams n = read_novelty_params(reader, chosen == Algorithm::nslc);
+    if (novelty != nullptr) *novelty = n;
     reader.finish();
     return p;
 }

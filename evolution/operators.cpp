@@ -8,12 +8,25 @@
 namespace morphogen {
 
 std::size_t tournament(std::span<const Individual> population, int size, RandomStream& stream) {
-    std::size_t winner = stream.below(population.size());
+    return tournament(population.size(), size, stream,
+                      [&](std::size_t a, std::size_t b) { return ranks_above(population[a], population[b]); });
+}
+
+std::size_t tournament(std::size_t count, int size, RandomStream& stream,
+                       const std::function<bool(std::size_t, std::size_t)>& above) {
+    std::size_t winner = stream.below(count);
     for (int i = 1; i < size; ++i) {
-        const std::size_t slot = stream.below(population.size());
-        if (ranks_above(population[slot], population[winner])) winner = slot;
+        const std::size_t slot = stream.below(count);
+        if (above(slot, winner)) winner = slot;
     }
     return winner;
+}
+
+const Individual* top_ranked(std::span<const Individual> population) {
+    const Individual* best = nullptr;
+    for (const Individual& member : population)
+        if (best == nullptr || ranks_above(member, *best)) best = &member;
+    return best != nullptr && best->valid() ? best : nullptr;
 }
 
 std::vector<double> crossover(std::span<const double> a, std::span<const double> b, std::span<const Block> blocks,

@@ -30,6 +30,14 @@ inline bool ranks_above(const Individual& a, const Individual& b) {
 // Slot of the tournament winner: `size` slots drawn uniformly with
 // replacement, the one that ranks highest wins. population must be non-empty.
 std::size_t tournament(std::span<const Individual> population, int size, RandomStream& stream);
+// The same draws over `count` slots (>= 1) ranked by `above(a, b)` (slot a
+// ranks above slot b), for searches that rank by more than fitness.
+std::size_t tournament(std::size_t count, int size, RandomStream& stream,
+                       const std::function<bool(std::size_t, std::size_t)>& above);
+
+// The member that ranks highest (ranks_above) if it is valid, else nullptr:
+// what a population search exports and the floor of what it keeps to export.
+const Individual* top_ranked(std::span<const Individual> population);
 
 // Child parameters taking each block from `a` or `b` with probability 1/2.
 // Blocks must tile the parameters (checked by check_blocks).

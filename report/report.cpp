@@ -228,10 +228,9 @@ RunInputs read_run(const fs::path& run_dir, const RunPaths& paths) {
 
 // The run at a glance and its history, column by column.
 void summary_json(json& d, const fs::path& run_dir, const RunInputs& in) {
-    const bool qd = in.config.algorithm == Algorithm::map_elites;
     d["name"] = in.config.run.name;
     d["run_dir"] = fs::absolute(run_dir).lexically_normal().string();
-    d["algorithm"] = qd ? "map_elites" : "steady_state";
+    d["algorithm"] = algorithm_name(in.config.algorithm);
     d["seed"] = in.state.seed;
     d["config"] = in.state.config;
     d["births"] = std::max<std::uint64_t>(in.lineage.size(), in.state.births());

@@ -20,7 +20,7 @@ GrowthProblem::GrowthProblem(const ExperimentConfig& config)
     : grower_(config.network, config.growth),
       dimension_(parameter_count(grower_.layers())),
       fitness_(config.fitness),
-      descriptors_decide_validity_(config.algorithm == Algorithm::map_elites),
+      descriptors_decide_validity_(config.algorithm != Algorithm::steady_state),
       keeps_exports_(config.run.export_every > 0 && !config.run.export_glb) {
     if (!config.qd.descriptors.empty())
         descriptors_.emplace(config.qd.measure_names(), config.fitness->canopy_params());

@@ -57,7 +57,7 @@ private:
     std::size_t dimension_;
     std::shared_ptr<const Fitness> fitness_;
     std::optional<DescriptorSet> descriptors_;  // when the config has descriptors
-    bool descriptors_decide_validity_;          // MAP-Elites: a failed measure makes the birth invalid
+    bool descriptors_decide_validity_;          // MAP-Elites, NSLC: a failed measure makes the birth invalid
     bool keeps_exports_;  // run.export_every > 0 with plain GLBs: evaluate_keeping keeps files
     // One per worker; evaluate() with worker w touches only workspaces_[w].
     mutable std::vector<GrowthWorkspace> workspaces_;

@@ -26,4 +26,12 @@ double read_finite(const nlohmann::json& value, const std::string& path) {
     return v;
 }
 
+std::vector<double> read_finite_array(const nlohmann::json& value, const std::string& path) {
+    if (!value.is_array()) fail(path, "expected an array");
+    std::vector<double> out;
+    out.reserve(value.size());
+    for (std::size_t i = 0; i < value.size(); ++i) out.push_back(read_finite(value[i], path + "[" + std::to_string(i) + "]"));
+    return out;
+}
+
 }  // namespace morphogen::checked_json

@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace morphogen::checked_json {
 
@@ -17,5 +18,7 @@ const nlohmann::json& member(const nlohmann::json& object, const char* key, cons
 std::uint64_t read_u64(const nlohmann::json& value, const std::string& path);
 // A finite number ("expected a number" / "not finite" otherwise).
 double read_finite(const nlohmann::json& value, const std::string& path);
+// An array of finite numbers ("expected an array" otherwise; elements as read_finite).
+std::vector<double> read_finite_array(const nlohmann::json& value, const std::string& path);
 
 }  // namespace morphogen::checked_json

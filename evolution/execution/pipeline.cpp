@@ -13,6 +13,16 @@ void take_evaluation(Individual& child, std::string& error, Evaluation&& e) {
     error = e.valid ? std::string() : std::move(e.error);
 }
 
+Inserted count_birth(std::uint64_t& births, std::uint64_t& invalid_in_generation, std::uint64_t population) {
+    Inserted what;
+    if (++births % population == 0) {
+        what.ends_generation = true;
+        what.generation_invalid = invalid_in_generation;
+        invalid_in_generation = 0;
+    }
+    return what;
+}
+
 BirthPipeline::BirthPipeline(const BirthSchedule& schedule, Breeder& breeder, GenomeEvaluator& evaluator,
                              std::vector<Individual> kept)
     : schedule_(schedule), breeder_(breeder), evaluator_(evaluator) {

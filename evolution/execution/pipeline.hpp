@@ -25,7 +25,11 @@ struct Inserted {
     std::uint64_t generation_new_cells = 0; // if so: cells first filled in it (MAP-Elites)
 };
 
-// A search as the pipeline drives it (SteadyStateGA, MapElites).
+// Counts an inserted birth: `births` + 1 and, if that ends a generation of
+// `population` births, what it did (its invalid births, then reset to 0).
+Inserted count_birth(std::uint64_t& births, std::uint64_t& invalid_in_generation, std::uint64_t population);
+
+// A search as the pipeline drives it (SteadyStateGA, MapElites, Nslc).
 class Breeder {
 public:
     virtual ~Breeder() = default;

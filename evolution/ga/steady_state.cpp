@@ -32,24 +32,15 @@ Individual SteadyStateGA::conceive(std::uint64_t birth) const {
 }
 
 Inserted SteadyStateGA::insert(Individual& child, std::string&) {
-    Inserted what;
     if (!child.valid()) ++state_.invalid_in_generation;
     keep_best(state_.best, child);
     (void)insert_child(state_.population, child, static_cast<std::size_t>(params_.population));
-    ++state_.births;
-    if (at_generation_end()) {
-        what.ends_generation = true;
-        what.generation_invalid = state_.invalid_in_generation;
-        state_.invalid_in_generation = 0;
-    }
-    return what;
+    return count_birth(state_.births, state_.invalid_in_generation, population());
 }
 
 double SteadyStateGA::export_floor() const {
-    double floor = -std::numeric_limits<double>::infinity();
-    for (const Individual& member : state_.population)
-        if (member.valid()) floor = std::max(floor, member.fitness);
-    return floor;
+    const Individual* top = top_ranked(state_.population);
+    return top != nullptr ? top->fitness : -std::numeric_limits<double>::infinity();
 }
 
 }  // namespace morphogen

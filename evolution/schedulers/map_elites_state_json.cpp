@@ -19,15 +19,7 @@ using checked_json::member;
 using checked_json::read_finite;
 using checked_json::read_u64;
 
-namespace {
-std::vector<double> read_numbers(const json& value, const std::string& path) {
-    if (!value.is_array()) fail(path, "expected an array");
-    std::vector<double> out;
-    out.reserve(value.size());
-    for (std::size_t i = 0; i < value.size(); ++i) out.push_back(read_finite(value[i], path + "[" + std::to_string(i) + "]"));
-    return out;
-}
-}  // namespace
+using checked_json::read_finite_array;
 
 json map_elites_state_to_json(const MapElitesState& state, GenomeBlobWriter* genomes) {
     json archive = json::object();
@@ -80,7 +72,7 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
             if (archive.contains("centroids")) fail(root + ".archive.centroids", "a grid archive has none");
             return Archive::grid(ranges);
         }
-        std::vector<double> centroids = read_numbers(member(archive, "centroids", root + ".archive"),
+        std::vector<double> centroids = read_finite_array(member(archive, "centroids", root + ".archive"),
                                                          root + ".archive.centroids");
         if (centroids.size() != cells * ranges.size())
                 fail(root + ".archive.centroids", std::to_string(centroids.size()) + " numbers, the config's " +
@@ -109,7 +101,7 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
         const std::string path = root + ".archive.elites[" + std::to_string(i) + "]";
         Individual elite = individual_from_json(elites[i], dimension, path, genomes);
         const std::uint64_t cell = read_u64(member(elites[i], "cell", path), path + ".cell");
-        elite.descriptors = read_numbers(member(elites[i], "descriptors", path), path + ".descriptors");
+        elite.descriptors = read_finite_array(member(elites[i], "descriptors", path), path + ".descriptors");
         const bool has_threshold = elites[i].contains("threshold");
         if (elites[i].size() != (has_threshold ? 9u : 8u)) fail(path, "unexpected keys");
         if (has_threshold) {
@@ -135,7 +127,7 @@ MapElitesState map_elites_state_from_json(const json& document, ArchiveKind kind
     const json& best = member(document, "best", root);
     if (!best.is_null()) {
         state.best = individual_from_json(best, dimension, root + ".best", genomes);
-        state.best->descriptors = read_numbers(member(best, "descriptors", root + ".best"), root + ".best.descriptors");
+        state.best->descriptors = read_finite_array(member(best, "descriptors", root + ".best"), root + ".best.descriptors");
         if (!state.best->valid()) fail(root + ".best", "the best individual must be valid");
         if (state.best->id >= state.births) fail(root + ".best.id", "not below the birth counter");
         for (const auto& [cell, elite] : state.archive.elites())

@@ -222,7 +222,7 @@ ExperimentConfig read_experiment_config(const json& original, const std::string&
                                           " outputs (it spreads channel 7), got " + std::to_string(config.network.outputs));
     config.fitness = read_section(top, "fitness", issues, read_fitness);
     config.evolution = read_section(top, "evolution", issues,
-                                    [&](ObjectReader& r) { return read_evolution_params(r, &config.algorithm); });
+                                    [&](ObjectReader& r) { return read_evolution_params(r, &config.algorithm, &config.novelty); });
     config.run = read_section(top, "run", issues, read_run_params);
     config.qd = read_qd_params(top, config.algorithm);
 

@@ -48,7 +48,8 @@ struct ExperimentConfig {
     std::shared_ptr<const Fitness> fitness;
     GaParams evolution;
     Algorithm algorithm = Algorithm::steady_state;  // evolution.algorithm
-    QdParams qd;  // descriptors and archive (map_elites only; empty otherwise)
+    QdParams qd;  // descriptors (map_elites, nslc; a GA's if given) and archive (map_elites only)
+    NoveltyParams novelty;  // evolution.novelty_* (nslc only; defaults otherwise)
     RunParams run;
     // The config with every default filled in and format_version recorded
     // (keys that do not apply, such as growth.turn_rate in the paper's mode,

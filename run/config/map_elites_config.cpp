@@ -16,7 +16,10 @@ using nlohmann::json;
 namespace {
 
 // One entry of `descriptors`; a bad measure, range or bin count is an issue.
-DescriptorRange read_descriptor(const json& item, const std::string& path, ConfigIssues& issues, json& resolved) {
+// `binned`: the run bins the range (bins is read); novelty search does not
+// (bins is refused).
+DescriptorRange read_descriptor(const json& item, const std::string& path, ConfigIssues& issues, json& resolved,
+                                bool binned) {
     ObjectReader reader(&item, path, issues);
     DescriptorRange range;
     range.name = reader.string("measure", "");
@@ -35,7 +38,11 @@ DescriptorRange read_descriptor(const json& item, const std::string& path, Confi
     }
     range.min = reader.number("min", 0.0, -1e12, 1e12);
     range.max = reader.number("max", 1.0, -1e12, 1e12);
-    range.bins = static_cast<int>(reader.integer("bins", 10, 1, 1'000'000));
+    if (binned)
+        range.bins = static_cast<int>(reader.integer("bins", 10, 1, 1'000'000));
+    else if (reader.raw("bins") != nullptr)
+        issues.add(reader.path_of("bins"), "not used by evolution.algorithm \"nslc\", which measures distances in "
+                                           "units of max - min: leave it out");
     bool bounds = true;
     for (const char* key : {"min", "max"})
         if (item.is_object() && !item.contains(key)) {
@@ -65,7 +72,12 @@ std::uint64_t QdParams::cells() const {
 }
 
 const char* algorithm_name(Algorithm algorithm) {
-    return algorithm == Algorithm::map_elites ? "map_elites" : "steady_state";
+    switch (algorithm) {
+        case Algorithm::map_elites: return "map_elites";
+        case Algorithm::nslc: return "nslc";
+        case Algorithm::steady_state: break;
+    }
+    return "steady_state";
 }
 
 QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
@@ -84,13 +96,15 @@ QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
     }
     // A steady-state run may declare descriptors only to record them in
     // lineage.csv (to bin a GA run into a MAP-Elites grid afterwards).
-    if (ga && descriptors == nullptr) return qd;
+    const bool nslc = algorithm == Algorithm::nslc;
+    if (algorithm == Algorithm::steady_state && descriptors == nullptr) return qd;
 
     // descriptors: a non-empty array of {measure, min, max, bins}
     json resolved_descriptors = json::array();
     if (descriptors == nullptr) {
-        issues.add("descriptors", "required when evolution.algorithm is \"map_elites\": a list of "
-                                  "{\"measure\": ..., \"min\": ..., \"max\": ..., \"bins\": ...}");
+        issues.add("descriptors", std::string("required when evolution.algorithm is \"") + algorithm_name(algorithm) +
+                                      "\": a list of {\"measure\": ..., \"min\": ..., \"max\": ...}" +
+                                      (nslc ? "" : " with \"bins\""));
     } else if (!descriptors->is_array() || descriptors->empty()) {
         issues.add("descriptors", "expected a non-empty array of {\"measure\", \"min\", \"max\", \"bins\"} objects, got " +
                                       descriptors->dump());
@@ -98,7 +112,7 @@ QdParams read_qd_params(ObjectReader& top, Algorithm algorithm) {
         for (std::size_t i = 0; i < descriptors->size(); ++i) {
             json resolved;
             qd.descriptors.push_back(
-                read_descriptor((*descriptors)[i], "descriptors[" + std::to_string(i) + "]", issues, resolved));
+                read_descriptor((*descriptors)[i], "descriptors[" + std::to_string(i) + "]", issues, resolved, !nslc));
             resolved_descriptors.push_back(std::move(resolved));
         }
     }

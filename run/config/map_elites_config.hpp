@@ -41,10 +41,12 @@ struct QdParams {
 // sigma_iso, sigma_line}, recorded in the resolved config of every
 // map_elites run (the default emitters when not given). Whether a full
 // archive fits in memory is resource_estimate's part (search_genomes counts
-// its cells), with the other limits.
+// its cells), with the other limits. Novelty search ("nslc", docs/algorithm.md
+// §14) needs `descriptors` as MAP-Elites does, refuses their `bins` (it bins
+// nothing) and, as the GA, `archive` and `emitters`.
 QdParams read_qd_params(ObjectReader& top, Algorithm algorithm);
 
-// "steady_state" | "map_elites".
+// "steady_state" | "map_elites" | "nslc".
 const char* algorithm_name(Algorithm algorithm);
 
 }  // namespace morphogen

@@ -3,7 +3,6 @@
 
 #include "evolution/operators.hpp"
 #include "run/searches/elites_search.hpp"
-#include "run/searches/ga_search.hpp"
 #include "run/config/map_elites_config.hpp"
 #include "engine/leaf_cards.hpp"
 #include "run/exports/plant_exports.hpp"
@@ -18,10 +17,11 @@ namespace morphogen {
 
 namespace {
 
-std::vector<RunSpecies> ga_species(const GaState& ga) {
+// A population's (GA, NSLC) valid members, ranked, one per genome.
+std::vector<RunSpecies> population_species(const SearchState& search) {
     std::vector<const Individual*> members;
-    for (const Individual& member : ga.population)
-        if (member.valid()) members.push_back(&member);
+    for (const Individual* member : search.view().members)
+        if (member->valid()) members.push_back(member);
     std::stable_sort(members.begin(), members.end(),
                      [](const Individual* a, const Individual* b) { return ranks_above(*a, *b); });
     std::vector<RunSpecies> species;
@@ -47,7 +47,7 @@ std::vector<RunSpecies> run_species(const SearchState& search, std::uint64_t top
         }
         return species;
     }
-    if (const GaState* ga = ga_state(search)) species = ga_species(*ga);
+    species = population_species(search);
     if (top > 0 && top < species.size()) species.resize(top);
     return species;
 }

@@ -213,6 +213,19 @@ void check_row_stats(const HistoryRow& row, std::size_t g, const PopulationStats
     if (sizes) check("mean_vertices", row.mean_vertices, stats.mean_size);
 }
 
+void check_parents_recorded_valid(std::span<const Individual> pending, std::span<const RecordedBirth> recorded,
+                                  const BirthSchedule& schedule) {
+    for (std::size_t i = 0; i < pending.size(); ++i) {
+        const Individual& child = pending[i];
+        const std::uint64_t source = schedule.source(child.id);
+        for (const std::optional<std::uint64_t>& parent : {child.parent1, child.parent2})
+            if (parent && (*parent >= source || *parent >= recorded.size() || !recorded[*parent].valid))
+                contradiction(at("pending", i) + " (birth " + std::to_string(child.id) + ") has parent " +
+                              std::to_string(*parent) + ", not a valid birth before its source state (" +
+                              std::to_string(source) + " births) in lineage.csv");
+    }
+}
+
 BirthReplay birth_replay(const ExperimentConfig& config) {
     const std::vector<int> layers = config.network.layers();
     return {config.evolution, config.run.seed, neuron_blocks(layers), parameter_count(layers),

@@ -10,6 +10,7 @@
 #include "run/loop/run_state.hpp"
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -39,6 +40,12 @@ void check_checkpoint_against_lineage(const RunState& state, std::string_view li
 
 // What re-drawing a birth's parents needs, for `config`'s run.
 BirthReplay birth_replay(const ExperimentConfig& config);
+
+// Every parent of a pending birth is a valid birth lineage.csv records
+// before the birth's source state (a search whose parents are members it
+// kept: MAP-Elites, NSLC); throws std::invalid_argument naming the first that is not.
+void check_parents_recorded_valid(std::span<const Individual> pending, std::span<const RecordedBirth> recorded,
+                                  const BirthSchedule& schedule);
 
 // A history row's fitness columns (and, with `sizes`, its mean vertices)
 // against the statistics of the members they summarise, which `source`

@@ -6,6 +6,7 @@
 #include "evolution/emitters/emitter_state_json.hpp"
 #include "evolution/schedulers/map_elites_state_json.hpp"
 #include "run/persistence/archive_csv.hpp"
+#include "run/persistence/checkpoint_checks.hpp"
 #include "run/config/experiment_config.hpp"
 #include "run/loop/stop_signals.hpp"
 
@@ -152,16 +153,7 @@ void ElitesSearchState::check_replayed_parents(std::span<const Individual> pendi
 void ElitesSearchState::check_pending_parents(std::span<const Individual> pending,
                                               std::span<const RecordedBirth> recorded, const BirthReplay& replay,
                                               const BirthSchedule& schedule) const {
-    for (std::size_t i = 0; i < pending.size(); ++i) {
-        const Individual& child = pending[i];
-        const std::uint64_t source = schedule.source(child.id);
-        for (const std::optional<std::uint64_t>& parent : {child.parent1, child.parent2})
-            if (parent && (*parent >= source || *parent >= recorded.size() || !recorded[*parent].valid))
-                throw std::invalid_argument("pending[" + std::to_string(i) + "] (birth " + std::to_string(child.id) +
-                                            ") has parent " + std::to_string(*parent) +
-                                            ", not a valid birth before its source state (" + std::to_string(source) +
-                                            " births) in lineage.csv");
-    }
+    check_parents_recorded_valid(pending, recorded, schedule);
     // The CMA emitters' children (docs/algorithm.md §9.8): the same parents
     // as every other child of that emitter conceived between the same two
     // restart points (lineage.csv's or pending), and, conceived after the

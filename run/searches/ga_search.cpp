@@ -12,23 +12,6 @@
 namespace morphogen {
 
 namespace {
-class GaSearch final : public SearchOver<SteadyStateGA> {
-public:
-    GaSearch(const ExperimentConfig& c, Problem& problem, GaState state)
-        : SearchOver(c.evolution, c.run.seed, problem, std::move(state)) {}
-
-    void fill(HistoryRow& row, const Inserted&) const override {
-        fill_statistics(row, summarize(search_.state().population));
-    }
-    const Individual* exported() const override {
-        const Individual* best = nullptr;
-        for (const Individual& member : search_.state().population)
-            if (best == nullptr || ranks_above(member, *best)) best = &member;
-        return best != nullptr && best->valid() ? best : nullptr;
-    }
-    std::unique_ptr<SearchState> save() const override { return std::make_unique<GaSearchState>(search_.state()); }
-};
-
 // A member replayed from lineage.csv: its id and recorded fitness (parameters zero).
 Individual replayed(std::uint64_t id, const RecordedBirth& recorded, std::size_t dimension) {
     Individual member;
@@ -42,22 +25,6 @@ std::string parent_text(const std::optional<std::uint64_t>& parent) {
     return parent ? std::to_string(*parent) : "null";
 }
 }  // namespace
-
-SearchView GaSearchState::view() const {
-    SearchView v;
-    v.births = state.births;
-    v.best = &state.best;
-    for (const Individual& member : state.population) v.members.push_back(&member);
-    v.members_name = "ga.population";
-    v.members_source = "the population it holds";
-    v.invalid_in_generation = state.invalid_in_generation;
-    v.members_are_first_births = true;
-    return v;
-}
-
-void GaSearchState::fill(HistoryRow& row, const ExperimentConfig&) const {
-    fill_statistics(row, summarize(state.population));
-}
 
 nlohmann::json GaSearchState::to_json(GenomeBlobWriter* genomes) const { return ga_state_to_json(state, genomes); }
 
@@ -95,7 +62,8 @@ void GaSearchState::check_pending_parents(std::span<const Individual> pending, s
 }
 
 std::unique_ptr<RunSearch> GaSearchState::start(const ExperimentConfig& config, Problem& problem) {
-    return std::make_unique<GaSearch>(config, problem, std::move(state));
+    return std::make_unique<PopulationSearch<SteadyStateGA, GaSearchState>>(config.evolution, config.run.seed, problem,
+                                                                         std::move(state));
 }
 
 SearchKind ga_search_kind() {
@@ -108,11 +76,7 @@ SearchKind ga_search_kind() {
                 return std::make_unique<GaSearchState>(ga_state_from_json(stored, config.evolution, dimension, genomes));
             },
             [](nlohmann::json& stored, const std::function<void(nlohmann::json&, const std::string&)>& genome) {
-                if (!stored.is_object()) return;
-                if (stored.contains("population") && stored["population"].is_array())
-                    for (std::size_t i = 0; i < stored["population"].size(); ++i)
-                        genome(stored["population"][i], "ga.population[" + std::to_string(i) + "]");
-                if (stored.contains("best")) genome(stored["best"], "ga.best");
+                each_population_genome(stored, "ga", genome);
             }};
 }
 

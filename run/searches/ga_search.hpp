@@ -3,22 +3,16 @@
 // summarise the population, it exports the population member that ranks
 // highest, and its state is stored under "ga" (evolution/ga/ga_state_json.hpp).
 #include "evolution/ga/steady_state.hpp"
-#include "run/searches/run_search.hpp"
-#include "run/searches/search_state.hpp"
+#include "run/searches/population_search_state.hpp"
 
 namespace morphogen {
 
-class GaSearchState final : public SearchState {
+class GaSearchState final : public PopulationSearchState<GaState, GaSearchState> {
 public:
-    explicit GaSearchState(GaState state = {}) : state(std::move(state)) {}
-    GaState state;
+    using PopulationSearchState::PopulationSearchState;
+    static constexpr bool first_births = true;
 
-    std::unique_ptr<SearchState> clone() const override { return std::make_unique<GaSearchState>(state); }
     const char* key() const override { return "ga"; }
-    std::uint64_t births() const override { return state.births; }
-    const std::optional<Individual>& best() const override { return state.best; }
-    SearchView view() const override;
-    void fill(HistoryRow& row, const ExperimentConfig& config) const override;
     nlohmann::json to_json(GenomeBlobWriter* genomes) const override;
     // Every history row's fitness columns against the population replayed
     // from lineage.csv's fitness column with the GA's insertion rule.

@@ -71,6 +71,11 @@ std::span<const SearchKind> search_kinds();
 // The row of `algorithm`.
 const SearchKind& search_kind(Algorithm algorithm);
 
+// SearchKind::each_genome of a state that keeps a "population" array and a
+// "best" (the GA's, NSLC's), stored under `key`.
+void each_population_genome(nlohmann::json& stored, const std::string& key,
+                            const std::function<void(nlohmann::json&, const std::string&)>& genome);
+
 // The statistics columns of a history row (best .. mean_vertices) from a
 // summary of the members, for every search.
 void fill_statistics(HistoryRow& row, const PopulationStats& stats);

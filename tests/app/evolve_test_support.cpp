@@ -10,8 +10,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 namespace morphogen::test {
@@ -98,6 +101,14 @@ void check_same_results(const fs::path& a, const fs::path& b) {
     CHECK(read_text(a / "lineage.csv") == read_text(b / "lineage.csv"));
     CHECK(history_without_times(a) == history_without_times(b));
     CHECK(checkpoint_without_times(a) == checkpoint_without_times(b));
+}
+
+void wait_for_rows(const fs::path& dir, std::size_t rows) {
+    for (int i = 0; i < 2000; ++i) {
+        const std::string text = read_text(dir / "history.csv");
+        if (static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')) >= rows + 1) return;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
 }
 
 // Appending, not "'" + string: GCC 12 warns falsely (-Wrestrict).

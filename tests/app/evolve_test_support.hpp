@@ -34,6 +34,9 @@ int spawn_morphogen(const std::vector<std::string>& args, const fs::path& log, b
 // killed; `killed`, if given, tells the two apart).
 int wait_for(int pid, bool* killed = nullptr);
 
+// Waits until history.csv has at least `rows` data rows (or ~10 s passed).
+void wait_for_rows(const fs::path& dir, std::size_t rows);
+
 // A path quoted for the shell.
 std::string q(const fs::path& p);
 

@@ -33,14 +33,6 @@ fs::path numbered(fs::path path, int number) {
 
 std::size_t lines(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
 
-// Waits until history.csv has at least `rows` data rows (or ~10 s passed).
-void wait_for_rows(const fs::path& dir, std::size_t rows) {
-    for (int i = 0; i < 2000; ++i) {
-        if (lines(read_text(dir / "history.csv")) >= rows + 1) return;
-        std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
-}
-
 std::uint64_t checkpoint_births(const fs::path& dir) {
     return checkpoint_without_times(dir)["ga"]["births"].get<std::uint64_t>();
 }

@@ -159,7 +159,7 @@ TEST_CASE("command-line overrides are checked like keys and recorded", "[app][co
 }
 
 TEST_CASE("shipped configs and the default config are valid under schema.json", "[app][config][schema]") {
-    for (const char* name : {"canopy.json", "quick.json", "map_elites.json", "tree.json"}) {
+    for (const char* name : {"canopy.json", "quick.json", "map_elites.json", "tree.json", "tree_nslc.json"}) {
         INFO(name);
         const auto path = source_dir / "configs" / name;
         const json document = json::parse(read_text(path));
@@ -176,7 +176,8 @@ TEST_CASE("shipped configs and the default config are valid under schema.json", 
     // and the schema rejects what the reader rejects
     for (const char* bad : {R"({"evolution": {"populaton": 3}})", R"({"run": {"seed": -1}})",
                             R"({"growth": {"steps": 1.5}})", R"({"fitness": {"type": "light", "height": 3}})",
-                            R"({"fitness": {"type": "sum"}})", R"({"run": {"name": "a/b"}})", R"({"network": []})"}) {
+                            R"({"fitness": {"type": "sum"}})", R"({"run": {"name": "a/b"}})", R"({"network": []})",
+                            R"({"evolution": {"novelty_k": 3}})", R"({"evolution": {"algorithm": "nslc"}})"}) {
         INFO(bad);
         CHECK(schema_errors(json::parse(bad)) != "");
         CHECK(config_errors(json::parse(bad)) != "");
@@ -364,8 +365,8 @@ TEST_CASE("steady_state configs resolve the algorithm and no MAP-Elites keys", "
     CHECK(schema_errors(json::parse(R"({"evolution": {"algorithm": "map_elites"}, "archive": {"type": "grid"},
         "emitters": [{"kind": "gaussian"}], "descriptors": [{"measure": "height", "min": 0, "max": 1}]})")) == "");
     CHECK_THAT(config_errors(json{{"evolution", {{"algorithm", "map_elite"}}}}),
-               Catch::Contains("evolution.algorithm: \"map_elite\" is not one of \"steady_state\", \"map_elites\" "
-                               "(did you mean \"map_elites\"?)"));
+               Catch::Contains("evolution.algorithm: \"map_elite\" is not one of \"steady_state\", \"map_elites\", "
+                               "\"nslc\" (did you mean \"map_elites\"?)"));
 }
 
 TEST_CASE("a steady-state config may declare descriptors, only to record them", "[app][config][map_elites]") {

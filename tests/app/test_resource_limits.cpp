@@ -147,7 +147,7 @@ TEST_CASE("the checkpoint estimate bounds a real run's checkpoint, and is not fa
 }
 
 TEST_CASE("shipped configs pass comfortably on a modest machine", "[limits]") {
-    for (const char* name : {"canopy.json", "quick.json", "map_elites.json", "tree.json", "tree_map.json"}) {
+    for (const char* name : {"canopy.json", "quick.json", "map_elites.json", "tree.json", "tree_map.json", "tree_nslc.json"}) {
         const std::string path = std::string(MORPHOGEN_SOURCE_DIR) + "/configs/" + name;
         const ExperimentConfig config = load_experiment_config(path);
         const ResourceEstimate e = estimate_of(config, evolution_on(16));
@@ -281,7 +281,7 @@ TEST_CASE("the options raise, lower and lift the limits", "[limits][cli]") {
         CHECK(r.code == 2);
     }
     // Shipped configs pass as they are, and say what they need.
-    for (const char* name : {"canopy.json", "quick.json", "map_elites.json", "tree.json", "tree_map.json"}) {
+    for (const char* name : {"canopy.json", "quick.json", "map_elites.json", "tree.json", "tree_map.json", "tree_nslc.json"}) {
         const CliResult r = run_morphogen("validate " + std::string(MORPHOGEN_SOURCE_DIR) + "/configs/" + name);
         INFO(r.output);
         CHECK(r.code == 0);

@@ -3,6 +3,7 @@
 #include "evolution/genome_blob.hpp"
 #include "run/config/experiment_config.hpp"
 #include "run/growth_problem.hpp"
+#include "run/searches/nslc_search.hpp"
 #include "run/searches/run_search.hpp"
 #include "tests/run/search_states.hpp"
 
@@ -22,6 +23,10 @@ ExperimentConfig config_for(Algorithm algorithm) {
     if (algorithm == Algorithm::map_elites) {
         text["evolution"]["algorithm"] = "map_elites";
         text["descriptors"] = {{{"measure", "height"}, {"min", 0}, {"max", 1}, {"bins", 3}}};
+    }
+    if (algorithm == Algorithm::nslc) {
+        text["evolution"]["algorithm"] = "nslc";
+        text["descriptors"] = {{{"measure", "height"}, {"min", 0}, {"max", 1}}};
     }
     return read_experiment_config(text, "test");
 }
@@ -46,10 +51,12 @@ TEST_CASE("every algorithm has one registry row, with its own content key", "[ru
     CHECK_FALSE(search_kind(Algorithm::steady_state).qd_history);
     CHECK(search_kind(Algorithm::map_elites).key == std::string("map_elites"));
     CHECK(search_kind(Algorithm::map_elites).qd_history);
+    CHECK(search_kind(Algorithm::nslc).key == std::string("nslc"));
+    CHECK_FALSE(search_kind(Algorithm::nslc).qd_history);
 }
 
 TEST_CASE("a search's first state is stored under its key and read back by its row", "[run][search]") {
-    for (const Algorithm algorithm : {Algorithm::steady_state, Algorithm::map_elites}) {
+    for (const Algorithm algorithm : {Algorithm::steady_state, Algorithm::map_elites, Algorithm::nslc}) {
         const ExperimentConfig config = config_for(algorithm);
         const SearchKind& kind = search_kind(algorithm);
         const std::unique_ptr<SearchState> first = kind.initial(config, 1, nullptr);
@@ -92,6 +99,35 @@ TEST_CASE("a GA state's genomes go to the blob and come back, and a copy is its 
     ga_of(copy).births = 7;
     CHECK(state.births() == 2);
     CHECK(copy.births() == 7);
+}
+
+TEST_CASE("an NSLC state's genomes go to the blob and come back with its descriptors and archive", "[run][search]") {
+    const ExperimentConfig config = config_for(Algorithm::nslc);
+    NslcState nslc;
+    nslc.births = 3;
+    nslc.population = {member(2, 2.0, 3), member(0, 1.0, 3)};
+    nslc.population[0].descriptors = {0.5};
+    nslc.population[1].descriptors = {0.25};
+    nslc.best = nslc.population[0];
+    nslc.archive = {Individual{0, {}, {}, {}, 1.0, 0.0, {0.25}}, Individual{1, {}, {}, {}, 3.0, 0.0, {0.75}}};
+    RunState state;
+    state.search = std::make_unique<NslcSearchState>(nslc);
+
+    GenomeBlobWriter writer;
+    const nlohmann::json stored = state.search->to_json(&writer);
+    CHECK(writer.count() == 3);  // two members and the best; archive points keep no genome
+    CHECK(stored["archive"][1] == nlohmann::json{{"id", 1}, {"fitness", 3.0}, {"descriptors", {0.75}}});
+    GenomeBlobReader reader(writer.bytes(), writer.count(), writer.dimension());
+    const std::unique_ptr<SearchState> read = search_kind(Algorithm::nslc).load(stored, config, 3, &reader);
+    CHECK(read->to_json(nullptr) == state.search->to_json(nullptr));
+    CHECK(nslc_state(*read)->population[1].descriptors == std::vector<double>{0.25});
+
+    nlohmann::json walked = stored;
+    std::set<std::string> paths;
+    search_kind(Algorithm::nslc).each_genome(walked, [&](nlohmann::json&, const std::string& path) {
+        paths.insert(path);
+    });
+    CHECK(paths == std::set<std::string>{"nslc.population[0]", "nslc.population[1]", "nslc.best"});
 }
 
 TEST_CASE("a state's history statistics are those of its members", "[run][search]") {
