@@ -106,7 +106,7 @@ std::size_t lineage_rows(const fs::path& dir) {
     return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
 }
 
-void wait_for_rows(const fs::path& dir, std::size_t rows) {
+void wait_for_lineage_rows(const fs::path& dir, std::size_t rows) {
     const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(60);
     while (lineage_rows(dir) < rows) {
         REQUIRE(std::chrono::steady_clock::now() < end);
@@ -224,7 +224,7 @@ TEST_CASE("SIGTERM to mpirun: rank 0 checkpoints with births in flight, every pr
     const fs::path dir = tmp.path / "run";
     const int pid = spawn(mpirun(3) + "evolve " + config.string() + " --out " + dir.string() + " --threads 1",
                           tmp.path / "log");
-    wait_for_rows(dir, 200);
+    wait_for_lineage_rows(dir, 200);
     ::kill(pid, SIGTERM);
     const int code = wait_at_most(pid, 60);
     const std::string output = read_text(tmp.path / "log");
@@ -253,7 +253,7 @@ TEST_CASE("a killed worker ends the job naming its rank; the run resumes from it
     const fs::path dir = tmp.path / "run";
     const int pid = spawn(mpirun(3) + "evolve " + config.string() + " --out " + dir.string() + " --threads 1",
                           tmp.path / "log");
-    wait_for_rows(dir, 200);
+    wait_for_lineage_rows(dir, 200);
     const int worker = rank_pid(1, dir);
     REQUIRE(worker > 0);
     ::kill(worker, SIGKILL);
