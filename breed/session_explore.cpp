@@ -19,6 +19,10 @@ ExploreSettings BreedSession::explore_settings_for(const std::vector<std::string
     return settings;
 }
 
+namespace {
+constexpr std::uint64_t kFillTries = 8;  // children drawn for one cell the search left empty
+}  // namespace
+
 std::vector<ExploreSeed> BreedSession::explore_seeds(const std::vector<std::string>& parents, ExploreAlong along) const {
     std::vector<ExploreSeed> seeds;
     for (const std::string& id : parents) {
@@ -92,9 +96,19 @@ void BreedSession::finish_explore(ExploreResult result, std::vector<std::string>
         if (!is_parent && genomes.size() + parents.size() < static_cast<std::size_t>(kBreedGridSize))
             genomes.push_back(std::move(g));
     }
-    // Fewer elites than cells: the rest are the parents' children.
-    while (genomes.size() + parents.size() < static_cast<std::size_t>(kBreedGridSize))
-        genomes.push_back(child_of(parents, 0.5, next_plant_ + genomes.size()));
+    // Fewer elites than cells: the rest are the parents' children; along the
+    // architecture, not collapsed ones where one of a few tries stands.
+    const double min_height = along == ExploreAlong::architecture ? explore_settings_for(parents, along).min_height : 0.0;
+    while (genomes.size() + parents.size() < static_cast<std::size_t>(kBreedGridSize)) {
+        const std::uint64_t number = next_plant_ + genomes.size();
+        std::vector<double> child = child_of(parents, 0.5, number);
+        // Further tries draw from streams no plant number reaches (bit 61).
+        for (std::uint64_t attempt = 1; min_height > 0.0 && attempt < kFillTries; ++attempt) {
+            if (growth_.evaluate_architecture(child, min_height).valid) break;
+            child = child_of(parents, 0.5, number | (std::uint64_t{1} << 61) | (attempt << 40));
+        }
+        genomes.push_back(std::move(child));
+    }
     const std::vector<std::vector<std::string>> parent_lists(genomes.size(), parents);
     std::vector<std::string> grid = parents;
     const std::vector<std::string> found = add_plants(genomes, parent_lists, static_cast<int>(cursor_ + 1));
