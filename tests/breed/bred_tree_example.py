@@ -11,7 +11,7 @@ import sys
 import tempfile
 
 # What the README promises of the genome (docs/fitness-measures.md).
-MIN_LIMBS = 2
+MIN_LIMBS = 3
 MAX_FIRST_FORK = 0.6  # the first fork's height over the plant's
 
 
