@@ -12,11 +12,28 @@
 
 namespace morphogen {
 
-ExploreSettings explore_settings(const ExperimentConfig& config, int grid) {
+std::string explore_along_name(ExploreAlong along) {
+    return along == ExploreAlong::architecture ? "architecture" : "descriptors";
+}
+
+std::optional<ExploreAlong> explore_along_from(const std::string& name) {
+    if (name == "architecture") return ExploreAlong::architecture;
+    if (name == "descriptors") return ExploreAlong::descriptors;
+    return std::nullopt;
+}
+
+ExploreSettings explore_settings(const ExperimentConfig& config, int grid, ExploreAlong along) {
     ExploreSettings s;
-    s.descriptors = config.qd.descriptors;
-    if (s.descriptors.empty() || s.descriptors.size() > 3)
-        s.descriptors = {{"spread", 0.0, 4.0, 10}, {"slenderness", 0.0, 4.0, 10}};
+    s.along = along;
+    if (along == ExploreAlong::architecture) {
+        // A limb a cell up to 10, the fork by tenths of the height, tips by twos:
+        // small steps toward more limbs and a lower fork each keep a cell.
+        s.descriptors = {{"limbs", 0.0, 10.0, 10}, {"first_fork", 0.0, 1.0, 10}, {"tips", 0.0, 20.0, 10}};
+    } else {
+        s.descriptors = config.qd.descriptors;
+        if (s.descriptors.empty() || s.descriptors.size() > 3)
+            s.descriptors = {{"spread", 0.0, 4.0, 10}, {"slenderness", 0.0, 4.0, 10}};
+    }
     const GaParams& ga = config.evolution;
     s.params.population = grid;
     s.params.crossover = ga.crossover;
@@ -34,13 +51,17 @@ ExploreSettings explore_settings(const ExperimentConfig& config, int grid) {
 // is valid only where it is placeable (finite descriptors).
 class ExploreSearch::Scorer final : public Problem {
 public:
-    explicit Scorer(const PlantGrowth& growth) : growth_(growth) {}
+    Scorer(const PlantGrowth& growth, const ExploreSettings& settings) : growth_(growth), settings_(settings) {}
     std::size_t dimension() const override { return growth_.dimension(); }
     std::vector<Block> blocks() const override { return neuron_blocks(growth_.grower().layers()); }
-    Evaluation evaluate(std::span<const double> params, int) const override { return growth_.evaluate(params); }
+    Evaluation evaluate(std::span<const double> params, int) const override {
+        return settings_.along == ExploreAlong::architecture ? growth_.evaluate_architecture(params, settings_.min_height)
+                                                             : growth_.evaluate(params);
+    }
 
 private:
     const PlantGrowth& growth_;
+    const ExploreSettings& settings_;
 };
 
 ExploreSearch::ExploreSearch(const PlantGrowth& growth, const ExploreSettings& settings,
@@ -55,7 +76,7 @@ ExploreSearch::ExploreSearch(const PlantGrowth& growth, const ExploreSettings& s
 }
 
 ExploreResult ExploreSearch::run() {
-    Scorer scorer(growth_);
+    Scorer scorer(growth_, settings_);
     MapElitesState state{static_cast<std::uint64_t>(settings_.params.population), Archive::grid(settings_.descriptors),
                          {}, 0, 0, fresh_emitters(settings_.params.emitters)};
     for (std::size_t i = 0; i < seeds_.size(); ++i) {
@@ -80,9 +101,64 @@ ExploreResult ExploreSearch::run() {
     const std::vector<const Individual*> elites = search.state().archive.snapshot();
     ExploreResult result;
     result.done = done_;
-    for (std::size_t i : pick_different_good(elites, settings_.descriptors, picks_))
+    const std::vector<std::size_t> picks = settings_.along == ExploreAlong::architecture
+                                               ? pick_tree_like(elites, settings_.descriptors, picks_)
+                                               : pick_different_good(elites, settings_.descriptors, picks_);
+    for (std::size_t i : picks)
         result.picked.push_back(elites[i]->params);
     return result;
+}
+
+namespace {
+
+// Squared distance of two elites' descriptors, each scaled by its range.
+double scaled_distance(const Individual& a, const Individual& b, const std::vector<DescriptorRange>& ranges) {
+    double d = 0.0;
+    for (std::size_t k = 0; k < ranges.size(); ++k) {
+        const double x = (a.descriptors.at(k) - b.descriptors.at(k)) / (ranges[k].max - ranges[k].min);
+        d += x * x;
+    }
+    return d;
+}
+
+// Adds to `picked` (already holding at least one of `pool`) the members of
+// `pool` farthest from all picked so far, one after another, until it holds
+// `count` or the pool is used up (ties: the earlier in the pool).
+void add_farthest(const std::vector<const Individual*>& elites, const std::vector<DescriptorRange>& ranges,
+                  const std::vector<std::size_t>& pool, std::size_t count, std::vector<std::size_t>& picked) {
+    std::vector<double> nearest(pool.size(), std::numeric_limits<double>::infinity());
+    for (std::size_t g = 0; g < pool.size(); ++g)
+        for (std::size_t p : picked) nearest[g] = std::min(nearest[g], scaled_distance(*elites[pool[g]], *elites[p], ranges));
+    while (picked.size() < count) {
+        std::size_t best = pool.size();
+        for (std::size_t g = 0; g < pool.size(); ++g) {
+            if (std::find(picked.begin(), picked.end(), pool[g]) != picked.end()) continue;
+            if (best == pool.size() || nearest[g] > nearest[best]) best = g;
+        }
+        if (best == pool.size()) return;
+        picked.push_back(pool[best]);
+        for (std::size_t g = 0; g < pool.size(); ++g)
+            nearest[g] = std::min(nearest[g], scaled_distance(*elites[pool[g]], *elites[picked.back()], ranges));
+    }
+}
+
+}  // namespace
+
+std::vector<std::size_t> pick_tree_like(const std::vector<const Individual*>& elites,
+                                        const std::vector<DescriptorRange>& ranges, std::size_t count) {
+    std::vector<std::size_t> order(elites.size());
+    for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        const std::vector<double>& x = elites[a]->descriptors;
+        const std::vector<double>& y = elites[b]->descriptors;
+        if (x.at(0) != y.at(0)) return x[0] > y[0];  // more limbs
+        if (x.at(1) != y.at(1)) return x[1] < y[1];  // a lower fork
+        return elites[a]->fitness > elites[b]->fitness;
+    });
+    const std::size_t wanted = std::min(count, elites.size());
+    std::vector<std::size_t> picked(order.begin(), order.begin() + static_cast<std::ptrdiff_t>((wanted + 1) / 2));
+    if (!picked.empty()) add_farthest(elites, ranges, order, wanted, picked);
+    return picked;
 }
 
 std::vector<std::size_t> pick_different_good(const std::vector<const Individual*>& elites,
@@ -93,15 +169,6 @@ std::vector<std::size_t> pick_different_good(const std::vector<const Individual*
     std::sort(sorted.begin(), sorted.end());
     const double median = sorted.empty() ? 0.0 : sorted[(sorted.size() - 1) / 2];
 
-    auto distance = [&](std::size_t a, std::size_t b) {
-        double d = 0.0;
-        for (std::size_t k = 0; k < ranges.size(); ++k) {
-            const double span = ranges[k].max - ranges[k].min;
-            const double x = (elites[a]->descriptors.at(k) - elites[b]->descriptors.at(k)) / span;
-            d += x * x;
-        }
-        return d;
-    };
     // Fittest first; ties: the lower index (the lower cell).
     auto fitter = [&](std::size_t a, std::size_t b) { return fitness[a] > fitness[b] || (fitness[a] == fitness[b] && a < b); };
 
@@ -116,16 +183,7 @@ std::vector<std::size_t> pick_different_good(const std::vector<const Individual*
     std::vector<std::size_t> picked;
     if (!good.empty()) {
         picked.push_back(*std::min_element(good.begin(), good.end(), fitter));
-        std::vector<double> nearest(good.size(), std::numeric_limits<double>::infinity());
-        while (picked.size() < std::min(count, good.size())) {
-            std::size_t best = good.size();
-            for (std::size_t g = 0; g < good.size(); ++g) {
-                nearest[g] = std::min(nearest[g], distance(good[g], picked.back()));
-                if (std::find(picked.begin(), picked.end(), good[g]) != picked.end()) continue;
-                if (best == good.size() || nearest[g] > nearest[best]) best = g;
-            }
-            picked.push_back(good[best]);
-        }
+        add_farthest(elites, ranges, good, std::min(count, good.size()), picked);
     }
     std::sort(rest.begin(), rest.end(), fitter);
     for (std::size_t i = 0; i < rest.size() && picked.size() < count; ++i) picked.push_back(rest[i]);

@@ -9,29 +9,50 @@
 // the elites after n births are a pure function of (seeds, seed, n), so a
 // replay that runs the recorded number of births gets the same grid.
 //
-// The pick: the elites whose fitness is at least the median elite fitness
+// Along the config's descriptors (the first kind, and every explore line of
+// choices.jsonl without "along"), the pick: the elites whose fitness is at least the median elite fitness
 // (and above the lowest, when any elite is: a plateau of plants scoring 0
 // must not make every elite "good"), then farthest-point sampling over their descriptors (each scaled by its
 // range): the fittest first, then repeatedly the one farthest from all
 // picked so far (ties: the lower cell). Fewer good elites than cells: the
 // rest by fitness.
+//
+// Along the architecture (breed/plant_growth.hpp, "along": "architecture"):
+// the archive's cells are limbs, first_fork (the first fork's share of the
+// height) and tips; a birth shorter than kCollapsedHeight x the lowest seed's
+// height counts as collapsed (invalid, never an elite); the pick is
+// pick_tree_like below.
 #include "breed/plant_growth.hpp"
 #include "evolution/archives/archive.hpp"
 #include "evolution/individual.hpp"
 #include "evolution/schedulers/map_elites.hpp"
 
 #include <atomic>
+#include <optional>
+#include <string>
 #include <cstdint>
 #include <vector>
 
 namespace morphogen {
 
+enum class ExploreAlong { descriptors, architecture };
+// The name in the API and in choices.jsonl ("descriptors", "architecture"),
+// and back (std::nullopt for an unknown name).
+std::string explore_along_name(ExploreAlong along);
+std::optional<ExploreAlong> explore_along_from(const std::string& name);
+
+inline constexpr double kCollapsedHeight = 0.5;
+
 struct ExploreSettings {
-    std::vector<DescriptorRange> descriptors;  // the config's `descriptors`, or spread and slenderness
-    MapElitesParams params;                    // the config's mutation and crossover, default emitters
+    ExploreAlong along = ExploreAlong::descriptors;
+    // descriptors: the config's `descriptors`, or spread and slenderness;
+    // architecture: limbs, first_fork, tips.
+    std::vector<DescriptorRange> descriptors;
+    MapElitesParams params;  // the config's mutation and crossover, default emitters
+    double min_height = 0.0;  // architecture: a birth below it collapsed (set per search)
 };
 // The settings for a session's config.
-ExploreSettings explore_settings(const ExperimentConfig& config, int grid);
+ExploreSettings explore_settings(const ExperimentConfig& config, int grid, ExploreAlong along = ExploreAlong::descriptors);
 inline constexpr int kMaxExploreBirths = 100000;
 
 struct ExploreSeed {
@@ -80,5 +101,13 @@ private:
 // The pick described above, from `elites`, at most `count` of them (their indices).
 std::vector<std::size_t> pick_different_good(const std::vector<const Individual*>& elites,
                                              const std::vector<DescriptorRange>& ranges, std::size_t count);
+
+// The architecture pick, from `elites` whose descriptors are (limbs,
+// first_fork, tips), at most `count` of them (their indices): the first half
+// (rounded up) the most tree-like, by most limbs, then lowest first fork, then
+// fitness (ties: the lower index); the rest by farthest-point sampling over
+// the scaled descriptors from those picked, so the grid also spreads.
+std::vector<std::size_t> pick_tree_like(const std::vector<const Individual*>& elites,
+                                        const std::vector<DescriptorRange>& ranges, std::size_t count);
 
 }  // namespace morphogen

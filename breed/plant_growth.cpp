@@ -1,6 +1,7 @@
 #include "breed/plant_growth.hpp"
 
 #include "core/base/parallel_for.hpp"
+#include "fitness/architecture/architecture.hpp"
 #include "engine/plant_colour.hpp"
 #include "fitness/measures.hpp"
 #include "run/exports/plant_exports.hpp"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <functional>
 #include <stdexcept>
 
 namespace morphogen {
@@ -20,6 +22,33 @@ PlantGrowth::PlantGrowth(const ExperimentConfig& config, const std::vector<std::
       fitness_(config.fitness),
       descriptors_(descriptors, config.fitness->canopy_params()),
       colour_(colour) {}
+
+namespace {
+
+// tips, limbs, first_fork_height (as `score --json` reports them) and
+// first_fork: that height as a share of the plant's.
+void add_architecture_measures(MeshView mesh, std::map<std::string, double>& measures) {
+    ArchitectureParams params;
+    params.with_solidity = false;  // not shown; the convex hull is the costly part
+    Architecture a;
+    try {
+        a = measure_architecture(mesh, params);
+    } catch (const std::invalid_argument&) {
+        return;  // nothing to measure (no vertices)
+    }
+    measures["tips"] = a.tips;
+    measures["limbs"] = static_cast<double>(a.limbs.size());
+    measures["first_fork_height"] = a.first_fork_height;
+    // As a share of the height from the lowest vertex, as the fork is measured.
+    double zmin = mesh.positions.front().z(), zmax = zmin;
+    for (const Vec3& p : mesh.positions) {
+        zmin = std::min(zmin, p.z());
+        zmax = std::max(zmax, p.z());
+    }
+    if (zmax > zmin) measures["first_fork"] = a.first_fork_height / (zmax - zmin);
+}
+
+}  // namespace
 
 PlantOutcome PlantGrowth::grow(std::span<const double> params) const {
     const DatedGrowth dated = grow_dated(grower_, params);  // the same state as grower_.grow
@@ -36,6 +65,7 @@ PlantOutcome PlantGrowth::grow(std::span<const double> params) const {
     out.measures["height"] = stats.height;
     out.measures["width"] = stats.width;
     out.measures["area"] = mesh_area(mesh);
+    add_architecture_measures(mesh, out.measures);
     try {
         out.descriptors = descriptors_(mesh);
         for (std::size_t i = 0; i < out.descriptors.size(); ++i)
@@ -50,20 +80,43 @@ PlantOutcome PlantGrowth::grow(std::span<const double> params) const {
     return out;
 }
 
-Evaluation PlantGrowth::evaluate(std::span<const double> params) const {
+Evaluation PlantGrowth::evaluate_with(std::span<const double> params,
+                                      const std::function<void(MeshView, Evaluation&)>& place) const {
     GrowthWorkspace workspace;
     const GrowthState state = grower_.grow(params, workspace);
     const MeshView mesh = state.mesh.view();
     const FitnessOutcome scored = fitness_->evaluate(mesh);
     Evaluation out{scored.score, scored.valid, scored.error, static_cast<double>(state.mesh.num_vertices())};
-    if (!out.valid) return out;
-    try {
-        out.descriptors = descriptors_(mesh);
-    } catch (const std::invalid_argument& e) {
-        out.valid = false;
-        out.error = std::string("descriptors: ") + e.what();
-    }
+    if (out.valid) place(mesh, out);
     return out;
+}
+
+Evaluation PlantGrowth::evaluate(std::span<const double> params) const {
+    return evaluate_with(params, [this](MeshView mesh, Evaluation& out) {
+        try {
+            out.descriptors = descriptors_(mesh);
+        } catch (const std::invalid_argument& e) {
+            out.valid = false;
+            out.error = std::string("descriptors: ") + e.what();
+        }
+    });
+}
+
+Evaluation PlantGrowth::evaluate_architecture(std::span<const double> params, double min_height) const {
+    return evaluate_with(params, [min_height](MeshView mesh, Evaluation& out) {
+        const double height = mesh_stats(mesh).height;
+        std::map<std::string, double> measures;
+        if (height >= min_height) add_architecture_measures(mesh, measures);
+        if (height < min_height) {
+            out.error = "collapsed: height " + std::to_string(height) + " below " + std::to_string(min_height);
+        } else if (!measures.contains("first_fork")) {
+            out.error = "no architecture measures (a plant of no height)";
+        } else {
+            out.descriptors = {measures.at("limbs"), measures.at("first_fork"), measures.at("tips")};
+            return;
+        }
+        out.valid = false;
+    });
 }
 
 std::vector<PlantOutcome> PlantGrowth::grow_all(const std::vector<std::vector<double>>& genomes, int threads) const {

@@ -10,6 +10,7 @@
 #include "run/config/experiment_config.hpp"
 
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <optional>
 #include <span>
@@ -22,7 +23,7 @@ inline constexpr int kThumbPixels = 128;
 
 struct PlantOutcome {
     std::optional<double> fitness;          // none when the fitness found it invalid
-    std::map<std::string, double> measures;  // vertices, faces, height, width, area, and each descriptor
+    std::map<std::string, double> measures;  // vertices, faces, height, width, area, tips, limbs, first_fork(_height), each descriptor
     std::vector<double> descriptors;        // the explore search's descriptors; empty when not measurable
     std::string glb;                        // the GLB bytes (with COLOR_0 where colour is on)
     Image thumb;                            // kThumbPixels square (report/render.hpp)
@@ -45,10 +46,18 @@ public:
     // The search's view of a genome (explore.hpp): valid when the fitness
     // is and the descriptors are measurable; no files made. Thread-safe.
     Evaluation evaluate(std::span<const double> params) const;
+    // The architecture explore's view (breed/explore.hpp): descriptors
+    // limbs, first_fork and tips (as grow()'s measures); invalid when the
+    // fitness is, when they cannot be measured, or when the plant is shorter
+    // than `min_height` (collapsed). Thread-safe.
+    Evaluation evaluate_architecture(std::span<const double> params, double min_height) const;
     // grow() for many genomes on up to `threads` threads; results in order.
     std::vector<PlantOutcome> grow_all(const std::vector<std::vector<double>>& genomes, int threads) const;
 
 private:
+    // Grows and scores; `place` fills the descriptors of a valid plant (or makes it invalid).
+    Evaluation evaluate_with(std::span<const double> params,
+                             const std::function<void(MeshView, Evaluation&)>& place) const;
     GenomeGrower grower_;
     std::size_t dimension_;
     std::shared_ptr<const Fitness> fitness_;

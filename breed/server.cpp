@@ -210,8 +210,16 @@ struct BreedServer::Impl {
         if (path == "/api/explore")
             return post([this](const std::string& body_text) {
                 const json body = body_object(body_text);
-                allow_only(body, {"parents", "births"});
-                session.start_explore(parents_of(body), integer_field(body, "births", 400, 1, kMaxExploreBirths));
+                allow_only(body, {"parents", "births", "along"});
+                ExploreAlong along = ExploreAlong::architecture;
+                if (body.contains("along")) {
+                    const json& name = body.at("along");
+                    const std::optional<ExploreAlong> named =
+                        name.is_string() ? explore_along_from(name.get<std::string>()) : std::nullopt;
+                    if (!named) throw bad_request("\"along\" must be \"architecture\" or \"descriptors\"");
+                    along = *named;
+                }
+                session.start_explore(parents_of(body), integer_field(body, "births", 400, 1, kMaxExploreBirths), along);
                 return json_reply(session.state_json(), 202);
             });
         if (path == "/api/explore/stop")

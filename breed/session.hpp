@@ -91,9 +91,11 @@ public:
     void breed(const std::vector<std::string>& parents, double strength);
     void undo();
     void redo();
-    // Starts the explore search on its own thread; the next grid comes when
-    // it ends (or stop_explore()).
-    void start_explore(const std::vector<std::string>& parents, int births);
+    // Starts the explore search on its own thread, along the architecture
+    // or the config's descriptors (breed/explore.hpp); the next grid comes
+    // when it ends (or stop_explore()).
+    void start_explore(const std::vector<std::string>& parents, int births,
+                       ExploreAlong along = ExploreAlong::architecture);
     void stop_explore();
     // Waits for a running search to end and its grid to be saved (tests, shutdown).
     void wait_explore();
@@ -133,12 +135,14 @@ private:
     // Runs `change` (which ends with record()); if it throws, rolls back and rethrows.
     void as_one_choice(const std::function<void()>& change);
     void apply(const nlohmann::json& choice);  // replay: one line of choices.jsonl
-    // The explore search's seeds (400 for a parent it cannot place) and its random seed.
-    std::vector<ExploreSeed> explore_seeds(const std::vector<std::string>& parents) const;
+    // The explore search's settings for these parents, its seeds (400 for a
+    // parent it cannot place) and its random seed.
+    ExploreSettings explore_settings_for(const std::vector<std::string>& parents, ExploreAlong along) const;
+    std::vector<ExploreSeed> explore_seeds(const std::vector<std::string>& parents, ExploreAlong along) const;
     std::uint64_t explore_seed() const;
-    void finish_explore(ExploreResult result, std::vector<std::string> parents, int births);
+    void finish_explore(ExploreResult result, std::vector<std::string> parents, int births, ExploreAlong along);
     // Replay of an explore choice: the search run for the `done` births it made.
-    void replay_explore(const std::vector<std::string>& parents, int births, std::uint64_t done);
+    void replay_explore(const std::vector<std::string>& parents, int births, std::uint64_t done, ExploreAlong along);
     // Plant files (session_plants.cpp): removes one plant's, best effort; and
     // those of plants not in plants_, returned relative to dir_, sorted.
     void remove_plant_files(const std::string& id) const;

@@ -210,8 +210,12 @@ void BreedSession::apply(const json& choice) {
     } else if (kind == "redo") {
         redo_locked();
     } else if (kind == "explore") {
+        // A line without "along" is from before the architecture explore.
+        const std::string name = choice.value("along", std::string("descriptors"));
+        const std::optional<ExploreAlong> along = explore_along_from(name);
+        if (!along) throw bad_request("unknown explore \"along\" " + quoted(name));
         replay_explore(choice.at("parents").get<std::vector<std::string>>(), choice.at("births").get<int>(),
-                       choice.at("done").get<std::uint64_t>());
+                       choice.at("done").get<std::uint64_t>(), *along);
     } else {
         throw bad_request("unknown choice " + quoted(kind));
     }

@@ -88,6 +88,7 @@ class Viewer {
     this.loader = new THREE.GLTFLoader();
     this.models = new Map();  // id -> {root, radius, center} once loaded
     this.cells = [];          // {id, element} in grid order
+    this.large = null;        // {id, renderer} while the large view is open
     this.start = performance.now();
     const loop = () => { this.draw(); requestAnimationFrame(loop); };
     requestAnimationFrame(loop);
@@ -134,6 +135,51 @@ class Viewer {
     }
   }
 
+  // The large view: its own renderer on the dialog's canvas (the dialog
+  // covers the shared canvas), made once, drawing the grid's model of `id`.
+  openLarge(id, canvas) {
+    if (!this.largeRenderer) {
+      this.largeRenderer = new THREE.WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+      this.largeRenderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
+      this.largeRenderer.outputEncoding = THREE.sRGBEncoding;
+    }
+    this.large = { id };
+  }
+
+  closeLarge() { this.large = null; }
+
+  // Draws `model` turning into the viewport (x, y, w, h) of renderer `r`.
+  drawModel(r, model, x, y, w, h, seconds) {
+    r.setViewport(x, y, w, h);
+    model.root.rotation.y = seconds * 0.6;
+    this.scene.add(model.root);
+    this.camera.aspect = w / h;
+    const distance = model.radius / Math.sin((this.camera.fov * Math.PI) / 360) * 1.05;
+    this.camera.position.set(0, distance * 0.25, distance);
+    this.camera.lookAt(0, 0, 0);
+    this.camera.near = distance / 100;
+    this.camera.far = distance * 10;
+    this.camera.updateProjectionMatrix();
+    r.render(this.scene, this.camera);
+    this.scene.remove(model.root);
+  }
+
+  drawLarge(seconds) {
+    const model = this.large && this.models.get(this.large.id);
+    const r = this.largeRenderer;
+    if (!model || !model.root || !r) return;
+    const canvas = r.domElement;
+    const width = canvas.clientWidth, height = canvas.clientHeight;
+    if (!width || !height) return;
+    if (canvas.width !== Math.floor(width * r.getPixelRatio()) || canvas.height !== Math.floor(height * r.getPixelRatio())) {
+      r.setSize(width, height, false);
+    }
+    r.setClearColor(0xf1f4ee, 1);
+    r.clear();
+    this.drawModel(r, model, 0, 0, width, height, seconds);
+    canvas.dataset.drawn = this.large.id;
+  }
+
   draw() {
     const r = this.renderer;
     const canvas = r.domElement;
@@ -156,18 +202,9 @@ class Viewer {
       r.setClearColor(cell.element.classList.contains('selected') ? 0xfff3c4 : 0xf1f4ee, 1);
       r.clear();
       if (!model || !model.root) continue;
-      model.root.rotation.y = seconds * 0.6;
-      this.scene.add(model.root);
-      this.camera.aspect = rect.width / rect.height;
-      const distance = model.radius / Math.sin((this.camera.fov * Math.PI) / 360) * 1.05;
-      this.camera.position.set(0, distance * 0.25, distance);
-      this.camera.lookAt(0, 0, 0);
-      this.camera.near = distance / 100;
-      this.camera.far = distance * 10;
-      this.camera.updateProjectionMatrix();
-      r.render(this.scene, this.camera);
-      this.scene.remove(model.root);
+      this.drawModel(r, model, rect.left, y, rect.width, rect.height, seconds);
     }
+    this.drawLarge(seconds);
   }
 }
 
@@ -188,6 +225,42 @@ function startViewer() {
 
 const number = (x) => (typeof x !== 'number' ? String(x)
   : Number.isInteger(x) ? String(x) : Math.abs(x) >= 100 ? x.toFixed(0) : x.toPrecision(3));
+
+// Tips, limbs and the first fork (as a share of the height) first: what
+// tells a tree (docs/fitness-measures.md, architecture measures).
+const ARCHITECTURE_KEYS = ['tips', 'limbs', 'first_fork', 'first_fork_height'];
+function architectureLine(plant) {
+  const m = plant.measures || {};
+  const line = document.createElement('p');
+  line.className = 'architecture';
+  if (m.tips === undefined) {
+    line.textContent = 'no architecture measures';
+    return line;
+  }
+  const fork = m.first_fork === undefined ? '–' : m.first_fork >= 1 ? 'none' : Math.round(m.first_fork * 100) + ' %';
+  line.textContent = `tips ${m.tips} · limbs ${m.limbs} · first fork ${fork}`;
+  line.title = 'first fork: the lowest fork\'s height as a share of the plant\'s (none: it never forks)';
+  return line;
+}
+
+function openLarge(plant) {
+  const dialog = $('large');
+  $('large-title').textContent = 'plant ' + plant.id;
+  $('large-measures').replaceChildren(architectureLine(plant));
+  const fallback = $('large-thumb');
+  if (viewer) {
+    fallback.hidden = true;
+    $('large-view').hidden = false;
+    viewer.openLarge(plant.id, $('large-view'));
+  } else {
+    $('large-view').hidden = true;
+    fallback.hidden = false;
+    fallback.src = withToken(plant.thumb);
+    fallback.alt = 'plant ' + plant.id;
+  }
+  dialog.dataset.id = plant.id;
+  if (!dialog.open) dialog.showModal();
+}
 
 function cellFor(plant, isParent) {
   const cell = document.createElement('div');
@@ -224,10 +297,21 @@ function cellFor(plant, isParent) {
   fitness.className = 'fitness';
   fitness.textContent = plant.fitness === null || plant.fitness === undefined ? 'no fitness' : 'fitness ' + number(plant.fitness);
   head.appendChild(fitness);
+  const open = document.createElement('button');
+  open.type = 'button';
+  open.className = 'open-large';
+  open.textContent = '⤢';
+  open.title = 'Open this plant large';
+  open.setAttribute('aria-label', 'open ' + plant.id + ' large');
+  open.addEventListener('click', (e) => { e.stopPropagation(); openLarge(plant); });
+  open.addEventListener('keydown', (e) => e.stopPropagation());
+  head.appendChild(open);
   caption.appendChild(head);
+  caption.appendChild(architectureLine(plant));
   const measures = document.createElement('dl');
   measures.className = 'measures';
   for (const [key, value] of Object.entries(plant.measures || {})) {
+    if (ARCHITECTURE_KEYS.includes(key)) continue;
     const dt = document.createElement('dt');
     dt.textContent = key.replace(/_/g, ' ');
     const dd = document.createElement('dd');
@@ -472,6 +556,8 @@ function wire() {
   $('stop').addEventListener('click', stopSearch);
   $('show-lineage').addEventListener('click', openLineage);
   $('close-lineage').addEventListener('click', () => $('lineage').close());
+  $('close-large').addEventListener('click', () => $('large').close());
+  $('large').addEventListener('close', () => { if (viewer) viewer.closeLarge(); });
   const strength = $('strength');
   strength.addEventListener('input', () => { $('strength-value').textContent = Number(strength.value).toFixed(2); });
   document.addEventListener('keydown', (e) => {

@@ -1,6 +1,7 @@
 // The run-through of `morphogen breed`'s page in Debian's Chromium, driven by
 // playwright-core (tools/browser): the real command, the real server, the real
-// page. Load, choose two plants, breed, undo/redo (buttons and keys), lineage,
+// page. Load (with each plant's tips, limbs and first fork, and one opened
+// large), choose two plants, breed, undo/redo (buttons and keys), lineage,
 // export (and a refused export), reload, two tabs on one session, explore
 // (to the end, and stopped), Ctrl-C and --resume.
 //
@@ -112,27 +113,29 @@ function firstCellPixels() {
   return { plant, sum };
 }
 
-// Pixels of the shared WebGL canvas in bark's hues (red to orange, 0-50
+// What a WebGL canvas shows: `plant`, the pixels unlike the views'
+// background (0xf1f4ee); `bark`, those in bark's hues (red to orange, 0-50
 // degrees, clearly saturated): the colours from growth history put them at
 // the plants' feet; the old uniform green (0x6f9a4c) under the page's lights
 // gives none (its darkest, ground-lit side is still about 70 degrees).
-function barkPixels() {
-  const canvas = document.getElementById('views');
+function canvasPixels(id) {
+  const canvas = document.getElementById(id);
   const copy = document.createElement('canvas');
   copy.width = canvas.width;
   copy.height = canvas.height;
   const ctx = copy.getContext('2d');
   ctx.drawImage(canvas, 0, 0);
   const px = ctx.getImageData(0, 0, copy.width, copy.height).data;
-  let bark = 0;
+  let bark = 0, plant = 0;
   for (let i = 0; i < px.length; i += 4) {
     const r = px[i], g = px[i + 1], b = px[i + 2];
+    if (px[i + 3] > 0 && Math.abs(r - 0xf1) + Math.abs(g - 0xf4) + Math.abs(b - 0xee) > 60) plant++;
     const max = Math.max(r, g, b), min = Math.min(r, g, b);
     if (px[i + 3] === 0 || max - min < 12 || max !== r) continue;
     const hue = 60 * ((g - b) / (max - min));  // red is the largest: -60 .. 60 degrees
     if (hue >= 0 && hue <= 50) bark++;
   }
-  return bark;
+  return { bark, plant };
 }
 
 async function waitGeneration(page, g, timeout = 30000) {
@@ -145,6 +148,35 @@ async function select(page, indices) {
 
 async function setValue(page, selector, value) {
   await page.$eval(selector, (e, v) => { e.value = v; e.dispatchEvent(new Event('input', { bubbles: true })); }, value);
+}
+
+// Each cell's line of tips, limbs and first fork says what the API's measures say.
+async function checkArchitecture(page, address) {
+  const lines = await page.$$eval('#grid .cell .architecture', (ps) => ps.map((p) => p.textContent));
+  const want = (await getState(address)).grid.map((p) => {
+    const m = p.measures;
+    const fork = m.first_fork >= 1 ? 'none' : Math.round(m.first_fork * 100) + ' %';
+    return `tips ${m.tips} · limbs ${m.limbs} · first fork ${fork}`;
+  });
+  check(same(lines, want), `load: tips, limbs and first fork under each plant, as the API gives them (${lines[0]})`);
+}
+
+// The large view: a dialog whose own canvas draws the plant (pixels unlike
+// its background), with its measures; it closes, and choosing is unchanged.
+async function checkLarge(page, id) {
+  await page.click('#grid .cell:first-child .open-large');
+  await page.waitForSelector('#large[open]');
+  check(await page.textContent('#large-title') === 'plant ' + id, 'large: the button opens the plant in a dialog');
+  await page.waitForFunction((want) => document.getElementById('large-view').dataset.drawn === want, id, { timeout: 30000 });
+  const large = await page.evaluate(`(${canvasPixels})('large-view')`);
+  large.width = await page.$eval('#large-view', (c) => c.clientWidth);
+  large.cell = await page.$eval('#grid .cell .view', (v) => v.clientWidth);
+  check(large.width > 2 * large.cell && large.plant > 2000,
+    `large: drawn ${large.width} pixels wide (a cell: ${large.cell}), ${large.plant} pixels of plant`);
+  check(/^tips \d+ · limbs \d+ · first fork/.test(await page.textContent('#large-measures')), 'large: with its tips, limbs and first fork');
+  await page.click('#close-large');
+  check(!(await page.$eval('#large', (d) => d.open)), 'large: closes');
+  check(await page.locator('#grid .cell.selected').count() === 0, 'large: opening a plant does not choose it');
 }
 
 // ---- the run-through ------------------------------------------------------
@@ -172,7 +204,9 @@ async function runThrough(browser, tmp) {
     check(same(first, (await getState(address)).grid.map((p) => p.id)), 'load: the page shows the API\'s grid');
     check(await page.locator('#grid .cell .fitness').first().textContent() !== '', 'load: fitness under each plant');
     check(await page.locator('#grid .cell:first-child .measures dt').count() > 0, 'load: measures under each plant');
-    const bark = await page.evaluate(`(${barkPixels})()`);
+    await checkArchitecture(page, address);
+    await checkLarge(page, first[0]);
+    const { bark } = await page.evaluate(`(${canvasPixels})('views')`);
     check(bark > 200, `load: the plants are drawn in their colours from growth history (${bark} pixels in bark's hues)`);
 
     // Choose two, breed with strength 0.3.

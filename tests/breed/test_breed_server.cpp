@@ -121,6 +121,8 @@ TEST_CASE("the server prints its address, serves the page and API, and refuses w
     CHECK(status(api.post("/api/export", {{"id", "p000000"}, {"lods", 99}})) == 400);
     CHECK(status(api.post("/api/export", {{"id", "p000000"}, {"height", -2}})) == 400);
     CHECK(status(api.post("/api/explore", {{"parents", {"p000000"}}, {"births", 0}})) == 400);
+    CHECK(status(api.post("/api/explore", {{"parents", {"p000000"}}, {"along", "sideways"}})) == 400);
+    CHECK(status(api.post("/api/explore", {{"parents", {"p000000"}}, {"along", 1}})) == 400);
 
     // Unknown ids.
     CHECK(status(api.post("/api/breed", {{"parents", {"p999999"}}})) == 404);

@@ -1,0 +1,75 @@
+"""examples/bred-tree: the session replays byte for byte, its final plant is
+the shipped genome, in at most 40 choices, and `score --json` measures that
+genome as the example's README says (the session's measures agree with it).
+
+    python3 tests/breed/bred_tree_example.py MORPHOGEN_EXE SOURCE_DIR
+"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+# What the README promises of the genome (docs/fitness-measures.md).
+MIN_LIMBS = 3
+MAX_FIRST_FORK = 0.6  # the first fork's height over the plant's
+
+
+def fail(what):
+    print("FAILED: " + what)
+    sys.exit(1)
+
+
+def check(ok, what):
+    if not ok:
+        fail(what)
+    print("ok - " + what)
+
+
+def main():
+    exe, source = sys.argv[1], sys.argv[2]
+    example = os.path.join(source, "examples", "bred-tree")
+    session = os.path.join(example, "session")
+    with open(os.path.join(example, "tree.genome.json"), "rb") as f:
+        genome = f.read()
+    with open(os.path.join(session, "choices.jsonl"), "rb") as f:
+        choices = f.read()
+    lines = choices.decode().splitlines()
+    check(json.loads(lines[0])["choice"] == "start" and len(lines) - 1 <= 40,
+          "the session starts from configs/tree.json's grid and makes %d choices (at most 40)" % (len(lines) - 1))
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "replayed")
+        run = subprocess.run([exe, "breed", "--replay", session, "--out", out, "--threads", "2"],
+                             capture_output=True, text=True)
+        check(run.returncode == 0, "breed --replay exits 0 (%s)" % run.stderr.strip())
+        with open(os.path.join(out, "choices.jsonl"), "rb") as f:
+            check(f.read() == choices, "the replay writes the same choices.jsonl, byte for byte")
+        with open(os.path.join(out, "state.json")) as f:
+            state = json.load(f)
+        grid = state["steps"][state["cursor"]]["grid"]
+        same = []
+        for pid in grid:
+            with open(os.path.join(out, "genomes", pid + ".genome.json"), "rb") as f:
+                if f.read() == genome:
+                    same.append(pid)
+        check(len(same) == 1, "the final grid holds tree.genome.json byte for byte (%s)" % same)
+        plant = next(p for p in state["plants"] if p["id"] == same[0])
+        measures = plant["measures"]
+    score = subprocess.run([exe, "score", "--json", "--config", os.path.join(source, "configs", "tree.json"),
+                            "--genome", os.path.join(example, "tree.genome.json")], capture_output=True, text=True)
+    check(score.returncode == 0, "score --json reads the genome")
+    report = json.loads(score.stdout)
+    a = report["architecture"]
+    check([measures["tips"], measures["limbs"]] == [a["tips"], a["limbs"]] and
+          abs(measures["first_fork_height"] - a["first_fork_height"]) <= 1e-9 * max(1.0, a["first_fork_height"]),
+          "the session's tips, limbs and first fork are score's (%d, %d, %.3f)" %
+          (a["tips"], a["limbs"], a["first_fork_height"]))
+    check(a["limbs"] >= MIN_LIMBS, "%d limbs (at least %d)" % (a["limbs"], MIN_LIMBS))
+    check(measures["first_fork"] < MAX_FIRST_FORK,
+          "the first fork at %.2f of the height (below %.2f)" % (measures["first_fork"], MAX_FIRST_FORK))
+    check(report["fitness_valid"] and report["self_intersecting"] is False, "clean: valid, no self-intersection")
+    print("passed")
+
+
+if __name__ == "__main__":
+    main()
