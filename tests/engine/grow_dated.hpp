@@ -19,10 +19,12 @@ struct Grown {
     GrownPlant plant() const { return {.mesh = state.mesh.view(), .birth_steps = births, .steps = state.steps_done}; }
 };
 
-// random_test_genome(seed) grown for `steps` steps at the default settings.
-inline Grown grow_dated(std::uint64_t seed, int steps) {
+// random_test_genome(seed) grown for `steps` steps at the default settings,
+// in the given growth mode (the default's when not given).
+inline Grown grow_dated(std::uint64_t seed, int steps, GrowthMode mode = GrowthParams{}.mode) {
     GrowthParams growth;
     growth.steps = steps;
+    growth.mode = mode;
     const GenomeGrower grower(NetworkParams{}, growth);
     const Network network(random_test_genome(grower.layers(), seed));
     BirthSteps births(grower.seed().mesh.num_vertices());

@@ -28,14 +28,8 @@ struct Coloured {
 };
 
 Coloured grow_coloured(std::uint64_t seed, GrowthMode mode) {
-    GrowthParams growth;
-    growth.steps = 60;
-    growth.mode = mode;
-    const GenomeGrower grower(NetworkParams{}, growth);
-    const Network network(testing::random_test_genome(grower.layers(), seed));
-    BirthSteps births(grower.seed().mesh.num_vertices());
-    GrowthWorkspace workspace;
-    const GrowthState state = grower.grow(network, workspace, births.observer());
+    const testing::Grown grown = testing::grow_dated(seed, 60, mode);
+    const GrowthState& state = grown.state;
     const ExposureParams exposure_params{};
     const std::vector<double> exposure =
         mode == GrowthMode::branching ? final_exposure(state.mesh, exposure_params) : std::vector<double>{};
@@ -43,7 +37,7 @@ Coloured grow_coloured(std::uint64_t seed, GrowthMode mode) {
     out.positions = state.mesh.positions();
     out.tint = genome_tint(state);
     out.colours = plant_colours({.positions = state.mesh.positions(),
-                                 .birth_steps = births.steps(),
+                                 .birth_steps = grown.births,
                                  .steps = state.steps_done,
                                  .active = state.active,
                                  .exposure = exposure,

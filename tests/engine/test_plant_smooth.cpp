@@ -11,12 +11,14 @@
 #include "core/growth/genome_grower.hpp"
 #include "fitness/geometry/cgal_geometry.hpp"
 #include "tests/engine/glb_reader.hpp"
+#include "tests/engine/grow_dated.hpp"
 #include "tests/support/test_genomes.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <stdexcept>
+#include <utility>
 
 namespace morphogen {
 namespace {
@@ -28,15 +30,11 @@ struct SmoothPlant {
 };
 
 SmoothPlant grow_for_smoothing(std::uint64_t seed, GrowthMode mode) {
+    testing::Grown grown = testing::grow_dated(seed, 60, mode);
     GrowthParams growth;
     growth.steps = 60;
     growth.mode = mode;
-    const GenomeGrower grower(NetworkParams{}, growth);
-    const Network network(testing::random_test_genome(grower.layers(), seed));
-    BirthSteps births(grower.seed().mesh.num_vertices());
-    GrowthWorkspace workspace;
-    SmoothPlant out{grower.grow(network, workspace, births.observer()), {}, {}};
-    out.births = births.steps();
+    SmoothPlant out{std::move(grown.state), std::move(grown.births), {}};
     out.colours = growth_colours(out.state, out.births, growth);
     return out;
 }
