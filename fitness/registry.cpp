@@ -188,6 +188,8 @@ std::unique_ptr<FitnessFunction> read_plant(ObjectReader& reader) {
     params.root_height = reader.number("root_height", params.root_height, -kBig, kBig);
     params.shoot_radius = reader.number("shoot_radius", params.shoot_radius, 0.0, kBig, /*min_exclusive=*/true);
     params.shoot_half_light = reader.number("shoot_half_light", params.shoot_half_light, 0.0, kBig);
+    params.architecture.skeleton.band_edges = reader.number("shoot_band_edges", params.architecture.skeleton.band_edges,
+                                                            0.0, kBig, /*min_exclusive=*/true);
     return std::make_unique<PlantFunction>(std::move(params));
 }
 

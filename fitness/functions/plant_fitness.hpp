@@ -46,7 +46,11 @@ struct PlantFitnessParams {
     double root_height = 0.1;     // the lowest vertex must be at or below this z
     double shoot_radius = 2.5;    // a tip is fed by the lit faces this near (and nearest to it), > 0
     double shoot_half_light = 4.0;  // H: a tip fed this much light bears half, >= 0 (0 = every tip in full)
-    ArchitectureParams architecture;
+    // The skeleton that finds the tips: bands one median edge wide
+    // (shoot_band_edges), not the architecture measures' two, so a shoot about
+    // as long as it is thick stays a tip on a 1,000-vertex mesh (it reads the
+    // labelled controls' tips at 500-5,000 vertices, as the measures do).
+    ArchitectureParams architecture{.skeleton = {.band_edges = 1.0}};
 };
 
 struct PlantScore {

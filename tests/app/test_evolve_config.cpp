@@ -243,7 +243,8 @@ TEST_CASE("schema.json ranges equal the reader's ranges", "[app][config][schema]
                                          key == "material_cost" || key == "root_height"))
                 document[section]["type"] = "tree";
             if (section == "fitness" && (key == "half_saturation" || key == "moment_cost" || key == "shoot_radius" ||
-                                         key == "shoot_half_light" || key == "volume_cost" || key == "leaf_size"))
+                                         key == "shoot_half_light" || key == "volume_cost" || key == "leaf_size" ||
+                                         key == "shoot_band_edges"))
                 document[section]["type"] = "plant";
             if (section == "growth" && key == "turn_rate") document[section]["mode"] = "branching";
             if (section == "growth" && key == "signal_diffusion") {  // resolved (off) in the branching mode

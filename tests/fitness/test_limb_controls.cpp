@@ -2,6 +2,8 @@
 // labelled controls (tests/fitness/limb_controls.hpp) at 500 to 5,000
 // vertices: every reading must be the label at every resolution.
 #include "core/io/mesh_io.hpp"
+#include "fitness/architecture/architecture.hpp"
+#include "fitness/functions/plant_fitness.hpp"
 #include "tests/fitness/limb_controls.hpp"
 #include "tests/support/run_cli.hpp"
 #include "tests/support/temp_dir.hpp"
@@ -17,9 +19,12 @@
 using namespace morphogen;
 using namespace morphogen::testing;
 
-TEST_CASE("limb controls: score --json reads tips, limbs and first fork as labelled at every resolution",
-          "[fitness][architecture][limb-controls]") {
+TEST_CASE("limb controls: score --json reads tips, limbs and first fork as labelled at every resolution, and the "
+          "plant fitness's finer skeleton the tips",
+          "[fitness][architecture][plant][limb-controls]") {
     const TempDir tmp("limb_controls");
+    ArchitectureParams plant_shoots = PlantFitnessParams{}.architecture;
+    plant_shoots.with_solidity = false;
     for (const LimbControl& control : limb_controls()) {
         const std::vector<MeshArrays> meshes = limb_control_meshes(control.name);
         for (std::size_t i = 0; i < meshes.size(); ++i) {
@@ -38,6 +43,7 @@ TEST_CASE("limb controls: score --json reads tips, limbs and first fork as label
             CHECK_FALSE(a["solidity"].is_null());  // closed
             CHECK(a["tips"] == control.tips);
             CHECK(a["limbs"] == control.limbs);
+            CHECK(measure_architecture(mesh.view(), plant_shoots).tips == control.tips);
             double zmin = mesh.positions[0].z(), zmax = zmin;
             for (const Vec3& p : mesh.positions) zmin = std::min(zmin, p.z()), zmax = std::max(zmax, p.z());
             CHECK(a["first_fork_height"].get<double>() / (zmax - zmin) ==

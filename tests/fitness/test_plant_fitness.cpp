@@ -1,9 +1,11 @@
 // The `plant` fitness (fitness/functions/plant_fitness.hpp, docs/fitness-plant.md "plant"):
 // its light term on meshes whose irradiance is known, its moment, and its
-// config keys. The tips come from fitness/architecture/architecture.hpp, tested there.
+// config keys. The tips come from fitness/architecture/architecture.hpp, tested there, on the
+// finer bands that keep a crown's short shoots (tested here and on the labelled controls).
 #include "fitness/fitness.hpp"
 #include "fitness/functions/light.hpp"
 #include "fitness/functions/plant_fitness.hpp"
+#include "tests/fitness/limb_controls.hpp"
 #include "tests/fitness/mesh_builders.hpp"
 
 #include <catch2/catch.hpp>
@@ -217,6 +219,7 @@ TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][c
     CHECK(resolved["root_height"] == 0.1);
     CHECK(resolved["shoot_radius"] == 2.5);
     CHECK(resolved["shoot_half_light"] == 4.0);
+    CHECK(resolved["shoot_band_edges"] == 1.0);
     CHECK(resolved["volume_cost"] == 0.0);
     CHECK(resolved["leaf_size"] == 1.0);
     CHECK(resolved["stand_spacing"] == 0.0);
@@ -233,8 +236,36 @@ TEST_CASE("plant fitness: config keys, defaults and errors", "[fitness][plant][c
     CHECK(first_issue(R"({"type": "plant", "moment_cost": -1})").starts_with("fitness.moment_cost"));
     CHECK(first_issue(R"({"type": "plant", "shoot_radius": 0})").starts_with("fitness.shoot_radius"));
     CHECK(first_issue(R"({"type": "plant", "shoot_half_light": -1})").starts_with("fitness.shoot_half_light"));
+    CHECK(first_issue(R"({"type": "plant", "shoot_band_edges": 0})").starts_with("fitness.shoot_band_edges"));
     CHECK(first_issue(R"({"type": "plant", "volume_cost": -1})").starts_with("fitness.volume_cost"));
     CHECK(first_issue(R"({"type": "plant", "leaf_size": -1})").starts_with("fitness.leaf_size"));
     CHECK(first_issue(R"({"type": "plant", "stand_spacing": -1})").starts_with("fitness.stand_spacing"));
     CHECK(first_issue(R"({"type": "plant", "trunk_target": 0.2})").starts_with("fitness.trunk_target: unknown key"));
+}
+
+TEST_CASE("plant fitness: at the growth's 1,000 vertices a crown's short shoots are tips", "[fitness][plant]") {
+    // A trunk under one crown with 10 shoots standing out 2.5x as far as
+    // they are thick, decimated as the labelled controls are: the
+    // architecture measures' bands (two median edges) lose half of them, the
+    // plant's (one edge) keep at least 8 (5 and 8 when written).
+    constexpr double kPi = 3.141592653589793;
+    const Vec3 centre(0, 0, 6);
+    const auto field = [&](const Vec3& p) {
+        double f = smooth_union(cylinder_field(p, {0, 0, 0}, 0.7, 6.0), sphere_field(p, centre, 2.7), 0.3);
+        for (int i = 0; i < 10; ++i) {
+            const double polar = 0.35 + 0.8 * (i % 2), azimuth = 2 * kPi * i / 10;
+            const Vec3 dir(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth), std::cos(polar));
+            f = smooth_union(f, capsule_field(p, centre + 1.9 * dir, centre + 3.7 * dir, 0.25), 0.1);
+        }
+        return f;
+    };
+    const MeshArrays mesh = testing::decimated(testing::implicit_mesh(field, {-4.5, -4.5, -0.5}, {4.5, 4.5, 10.5}, 0.2), 1000);
+    PlantFitnessParams params;
+    params.light = one_sun(90.0);
+    params.light.spacing = 0.25;
+    const int measured_tips = measure_architecture(mesh.view()).tips;
+    const int plant_tips = plant_score(mesh.view(), params).tips;
+    INFO(mesh.positions.size() << " vertices: the measures' tips " << measured_tips << ", the plant's " << plant_tips);
+    CHECK(plant_tips >= 8);
+    CHECK(measured_tips <= plant_tips - 3);
 }
