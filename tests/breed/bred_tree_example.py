@@ -44,17 +44,19 @@ def check_genome(exe, source, genome_path):
 
 
 def main():
-    exe, source = sys.argv[1], sys.argv[2]
-    genome_only = sys.argv[3:] == ["--genome-only"]
-    example = os.path.join(source, "examples", "bred-tree")
+    exe, source, name = sys.argv[1], sys.argv[2], sys.argv[3]
+    genome_only = sys.argv[4:] == ["--genome-only"]
+    example = os.path.join(source, "examples", name)
     session = os.path.join(example, "session")
     with open(os.path.join(example, "tree.genome.json"), "rb") as f:
         genome = f.read()
     with open(os.path.join(session, "choices.jsonl"), "rb") as f:
         choices = f.read()
     lines = choices.decode().splitlines()
-    check(json.loads(lines[0])["choice"] == "start" and len(lines) - 1 <= 40,
-          "the session starts from configs/tree.json's grid and makes %d choices (at most 40)" % (len(lines) - 1))
+    start = json.loads(lines[0])
+    check(start["choice"] == "start" and len(lines) - 1 <= 40,
+          "the session starts (from %s) and makes %d choices (at most 40)" %
+          (start["from"] or "configs/tree.json's random grid", len(lines) - 1))
     report = check_genome(exe, source, os.path.join(example, "tree.genome.json"))
     if genome_only:
         print("passed")
