@@ -105,17 +105,19 @@ Evaluation PlantGrowth::evaluate(std::span<const double> params) const {
 Evaluation PlantGrowth::evaluate_architecture(std::span<const double> params, double min_height) const {
     return evaluate_with(params, [min_height](MeshView mesh, Evaluation& out) {
         const double height = mesh_stats(mesh).height;
-        std::map<std::string, double> measures;
-        if (height >= min_height) add_architecture_measures(mesh, measures);
         if (height < min_height) {
+            out.valid = false;
             out.error = "collapsed: height " + std::to_string(height) + " below " + std::to_string(min_height);
-        } else if (!measures.contains("first_fork")) {
-            out.error = "no architecture measures (a plant of no height)";
-        } else {
-            out.descriptors = {measures.at("limbs"), measures.at("first_fork"), measures.at("tips")};
             return;
         }
-        out.valid = false;
+        std::map<std::string, double> measures;
+        add_architecture_measures(mesh, measures);
+        if (!measures.contains("first_fork")) {
+            out.valid = false;
+            out.error = "no architecture measures (a plant of no height)";
+            return;
+        }
+        out.descriptors = {measures.at("limbs"), measures.at("first_fork"), measures.at("tips")};
     });
 }
 

@@ -12,6 +12,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <numeric>
 
 using namespace morphogen;
@@ -248,7 +249,7 @@ TEST_CASE("plant fitness: at the growth's 1,000 vertices a crown's short shoots 
     // they are thick, decimated as the labelled controls are: the
     // architecture measures' bands (two median edges) lose half of them, the
     // plant's (one edge) keep at least 8 (5 and 8 when written).
-    constexpr double kPi = 3.141592653589793;
+    constexpr double kPi = std::numbers::pi;
     const Vec3 centre(0, 0, 6);
     const auto field = [&](const Vec3& p) {
         double f = smooth_union(cylinder_field(p, {0, 0, 0}, 0.7, 6.0), sphere_field(p, centre, 2.7), 0.3);
