@@ -235,6 +235,14 @@ ExperimentConfig read_experiment_config(const json& original, const std::string&
 ExperimentConfig load_experiment_config(const std::string& path, const ConfigOverrides& overrides) {
     if (path.empty()) return read_experiment_config(json::object(), "default config", overrides);
     ExperimentConfig config = read_experiment_config(load_json_file(path), path, overrides);
+    // run.from names files beside the config, wherever it is run from: a
+    // config that ships with its seed genome works from any directory.
+    if (!config.run.from.empty()) {
+        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        for (std::string& source : config.run.from)
+            if (std::filesystem::path(source).is_relative()) source = (folder / source).lexically_normal().string();
+        config.resolved["run"]["from"] = config.run.from;
+    }
     if (config.run.name.empty()) {
         config.run.name = run_name_from_path(path);
         config.resolved["run"]["name"] = config.run.name;

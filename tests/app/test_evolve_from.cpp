@@ -101,6 +101,15 @@ TEST_CASE("evolve --from a genome file starts generation 0 from it and records a
     write_text(tmp.path / "keyed.json", config.dump());
     REQUIRE(run_morphogen(evolve(tmp.path / "keyed.json", tmp.path / "keyed", "")).code == 0);
     CHECK(read_text(tmp.path / "keyed" / "lineage.csv") == read_text(tmp.path / "seeded" / "lineage.csv"));
+
+    // a relative run.from is taken from the config's folder, not the working directory
+    fs::create_directories(tmp.path / "configs");
+    config["run"]["from"] = {fs::relative(genome, tmp.path / "configs").string()};
+    write_text(tmp.path / "configs" / "beside.json", config.dump());
+    REQUIRE(run_morphogen(evolve(tmp.path / "configs" / "beside.json", tmp.path / "beside", "")).code == 0);
+    CHECK(read_text(tmp.path / "beside" / "lineage.csv") == read_text(tmp.path / "seeded" / "lineage.csv"));
+    CHECK(manifest(tmp.path / "beside")["seeds"][0]["origin"] ==
+          (tmp.path / "configs" / fs::relative(genome, tmp.path / "configs")).lexically_normal().string());
 }
 
 TEST_CASE("evolve --from a run directory takes a GA run's best and a MAP-Elites run's elites", "[app][evolve][from]") {
