@@ -13,8 +13,9 @@
 # A run whose history.csv is complete is not run again, and one that was
 # stopped is resumed (to the same bytes as an unbroken run), so the script
 # can be stopped and re-run; a run whose config changed is started again.
-# Cost: 6,100 births a run, 5-8 minutes of one core (0.05-0.08 s a birth at
-# aeafe37; experiments/2026-11-27-trees-with-limbs.md); hours of wall time on a loaded machine.
+# Cost: tree.json's 3,100 births about 0.5 s of one core each (4,000 vertices,
+# experiments/2026-11-29-tree-json-fine-growth.md); the map's 6,100 births 5-8
+# minutes of one core; hours of wall time on a loaded machine.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seeds=("$@")
@@ -24,11 +25,12 @@ out=${OUT:-out/trees}
 threads=${THREADS:-2}
 mkdir -p "$out"
 
-# The map must show the same plants the GA runs grow and score.
+# The map must score the same network's plants as the GA runs (it grows them
+# at the smaller budget of 1,000 vertices and 150 steps, to stay cheap).
 python3 - <<'PY'
 import json, sys
 tree, tree_map = json.load(open("configs/tree.json")), json.load(open("configs/tree_map.json"))
-for key in ("network", "growth", "fitness"):
+for key in ("network", "fitness"):
     if tree.get(key) != tree_map.get(key):
         sys.exit(f"trees.sh: configs/tree.json and configs/tree_map.json differ in {key!r}")
 PY
@@ -66,9 +68,12 @@ if [ "${PLAIN:-1}" != 0 ]; then
   # The same config without the signals: what they are worth to evolution.
   python3 - "$out/tree-plain.config.json" <<'PY'
 import json, sys
+import os
 config = json.load(open("configs/tree.json"))
 for key in ("exposure", "signal_diffusion"):
     config["growth"].pop(key, None)
+# run.from is read from the config's folder: keep it naming the same genomes.
+config["run"]["from"] = [os.path.abspath(os.path.join("configs", f)) for f in config["run"].get("from", [])]
 json.dump(config, open(sys.argv[1], "w"), indent=1)
 PY
   s=${seeds[0]}

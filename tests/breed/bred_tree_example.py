@@ -1,6 +1,7 @@
 """examples/bred-tree: the session replays byte for byte, its final plant is
 the shipped genome, in at most 40 choices, and `score --json` measures that
-genome as the example's README says (the session's measures agree with it).
+genome, at the session's settings, as the example's README says (the
+session's measures agree with it).
 
     python3 tests/breed/bred_tree_example.py MORPHOGEN_EXE SOURCE_DIR [--genome-only]
 
@@ -29,10 +30,11 @@ def check(ok, what):
     print("ok - " + what)
 
 
-def check_genome(exe, source, genome_path):
-    """The shipped genome is a tree by the numbers; returns score's report."""
-    score = subprocess.run([exe, "score", "--json", "--config", os.path.join(source, "configs", "tree.json"),
-                            "--genome", genome_path], capture_output=True, text=True)
+def check_genome(exe, config, genome_path):
+    """The shipped genome is a tree by the numbers at the settings it was bred
+    under (the session's config); returns score's report."""
+    score = subprocess.run([exe, "score", "--json", "--config", config, "--genome", genome_path],
+                           capture_output=True, text=True)
     check(score.returncode == 0, "score --json reads the genome")
     report = json.loads(score.stdout)
     a = report["architecture"]
@@ -57,7 +59,7 @@ def main():
     check(start["choice"] == "start" and len(lines) - 1 <= 40,
           "the session starts (from %s) and makes %d choices (at most 40)" %
           (start["from"] or "configs/tree.json's random grid", len(lines) - 1))
-    report = check_genome(exe, source, os.path.join(example, "tree.genome.json"))
+    report = check_genome(exe, os.path.join(session, "config.json"), os.path.join(example, "tree.genome.json"))
     if genome_only:
         print("passed")
         return

@@ -16,9 +16,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 "$exe" grow --random 4 --steps 200 -o paper.glb --leaves --lods 3 --wind --wind-preset uv >/dev/null
-"$exe" grow --config "$src/configs/tree.json" --random 5 -o branching.glb --leaves --leaf-size 0.08 --lods 2 >/dev/null
+"$exe" grow --config "$src/configs/tree_map.json" --random 5 -o branching.glb --leaves --leaf-size 0.08 --lods 2 >/dev/null
 # With --colour: COLOR_0 on the body, which Blender imports as a colour attribute.
-"$exe" grow --config "$src/configs/tree.json" --random 5 -o colour.glb --colour --leaves --lods 2 >/dev/null
+"$exe" grow --config "$src/configs/tree_map.json" --random 5 -o colour.glb --colour --leaves --lods 2 >/dev/null
 blender -b --factory-startup --python-exit-code 1 --python "$src/tests/engine/blender_leaves_check.py" -- \
   paper.glb branching.glb colour.glb >blender.log 2>&1 || { cat blender.log; exit 1; }
 grep -E "^blender" blender.log

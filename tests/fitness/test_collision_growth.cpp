@@ -164,11 +164,18 @@ TEST_CASE("the same 1000 genomes in the branching mode self-intersect when colli
 
 namespace {
 
-// configs/tree.json's sizes (the branching mode's tree config; the paper's
+// configs/tree_map.json's sizes (tree.json's until 2026-11-29; the paper's
 // mode at the same sizes).
-GrowthParams tree_sizes(GrowthParams params) {
+GrowthParams map_sizes(GrowthParams params) {
     params.steps = 150;
     params.max_vertices = 1000;
+    return params;
+}
+
+// configs/tree.json's sizes.
+GrowthParams tree_sizes(GrowthParams params) {
+    params.steps = 300;
+    params.max_vertices = 4000;
     return params;
 }
 
@@ -214,20 +221,21 @@ TEST_CASE("touch: 1000 random genomes never self-intersect (60 steps), both mode
         CHECK(count_touch_self_intersecting(mode, 1 + 250 * block, kBlock) == 0);
 }
 
-TEST_CASE("touch: random genomes at the default settings and at tree.json's never self-intersect", "[collision][contact]") {
+TEST_CASE("touch: random genomes at the default settings and at tree_map.json's never self-intersect", "[collision][contact]") {
     // Genomes 51-150: 73 self-intersects without the fail-safe (branching
     // mode, default settings; tests/core/growth/test_contact_rule.cpp).
     const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
-    for (const GrowthParams& settings : {GrowthParams{}, tree_sizes(GrowthParams{})})
+    for (const GrowthParams& settings : {GrowthParams{}, map_sizes(GrowthParams{})})
         for (const GrowthParams& mode : {settings, branching(settings)})
             CHECK(count_touch_self_intersecting(mode, 51 + 25 * block, kTouchBlock) == 0);
 }
 
-TEST_CASE("touch: random genomes drawn as the branching searches draw them never self-intersect at tree.json's sizes",
+TEST_CASE("touch: random genomes drawn as the branching searches draw them never self-intersect at tree.json's "
+          "and tree_map.json's sizes",
           "[collision][contact]") {
     const auto block = static_cast<std::uint64_t>(GENERATE(0, 1, 2, 3));
-    CHECK(count_touch_self_intersecting(branching(tree_sizes(GrowthParams{})), 4242 + 25 * block, kTouchBlock, 2.0,
-                                        true) == 0);
+    for (const GrowthParams& sizes : {map_sizes(GrowthParams{}), tree_sizes(GrowthParams{})})
+        CHECK(count_touch_self_intersecting(branching(sizes), 4242 + 25 * block, kTouchBlock, 2.0, true) == 0);
 }
 
 TEST_CASE("touch: hostile genomes (saturated outputs or wide weights) never self-intersect", "[collision][contact]") {
@@ -265,14 +273,15 @@ TEST_CASE("the fail-safe's whole-mesh check agrees with CGAL's", "[collision][co
     CHECK(intersecting < 2 * count);
 }
 
-TEST_CASE("touch: 1000 random genomes in the paper's mode never self-intersect, default settings and tree.json's",
+TEST_CASE("touch: 1000 random genomes in the paper's mode never self-intersect, default settings and tree_map.json's",
           "[.][collision-slow]") {
-    for (const GrowthParams& settings : {GrowthParams{}, tree_sizes(GrowthParams{})})
+    for (const GrowthParams& settings : {GrowthParams{}, map_sizes(GrowthParams{})})
         CHECK(count_touch_self_intersecting(settings, 1, 1000) == 0);
 }
 
-TEST_CASE("touch: 1000 random genomes in the branching mode never self-intersect, default settings and tree.json's",
+TEST_CASE("touch: 1000 random genomes in the branching mode never self-intersect, default settings, tree_map.json's "
+          "and tree.json's",
           "[.][collision-slow]") {
-    for (const GrowthParams& settings : {GrowthParams{}, tree_sizes(GrowthParams{})})
+    for (const GrowthParams& settings : {GrowthParams{}, map_sizes(GrowthParams{}), tree_sizes(GrowthParams{})})
         CHECK(count_touch_self_intersecting(branching(settings), 1, 1000) == 0);
 }

@@ -55,7 +55,7 @@ grep -q -- "--colour and --wind-preset color both write COLOR_0" refused.txt
 "$exe" grow --random 4 --steps 200 -o leaves_lods_wind.glb --leaves --leaf-size 0.1 --leaf-density 1 --lods 3 --wind \
   --wind-preset uv,godot --colour --height 3 >/dev/null
 "$exe" grow --random 4 --steps 120 -o leaves_color_preset.glb --leaves --wind --wind-preset color >/dev/null
-"$exe" grow --config "$src/configs/tree.json" --random 5 -o leaves_branching.glb --leaves --lods 2 >/dev/null
+"$exe" grow --config "$src/configs/tree_map.json" --random 5 -o leaves_branching.glb --leaves --lods 2 >/dev/null
 node -e 'const b=require("fs").readFileSync(process.argv[1]); const n=b.readUInt32LE(12);
   const j=JSON.parse(b.subarray(20, 20 + n)); if (j.meshes[0].primitives.length !== 2 || j.materials[1].alphaMode !== "MASK" ||
   !j.images || j.images[0].mimeType !== "image/png") process.exit(1);' leaves_lods_wind.glb
