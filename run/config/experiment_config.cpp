@@ -236,9 +236,11 @@ ExperimentConfig load_experiment_config(const std::string& path, const ConfigOve
     if (path.empty()) return read_experiment_config(json::object(), "default config", overrides);
     ExperimentConfig config = read_experiment_config(load_json_file(path), path, overrides);
     // run.from names files beside the config, wherever it is run from: a
-    // config that ships with its seed genome works from any directory.
+    // config that ships with its seed genome works from any directory. The
+    // joined path is made absolute, so a run's recorded config names the same
+    // files whichever directory reads it later.
     if (!config.run.from.empty()) {
-        const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+        const std::filesystem::path folder = std::filesystem::absolute(std::filesystem::path(path)).parent_path();
         for (std::string& source : config.run.from)
             if (std::filesystem::path(source).is_relative()) source = (folder / source).lexically_normal().string();
         config.resolved["run"]["from"] = config.run.from;

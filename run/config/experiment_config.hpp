@@ -40,7 +40,7 @@ struct RunParams {
     // start generation 0 (seed_genomes.hpp); empty: random genomes. `evolve
     // --from` appends to it. Read once, by evolve: a run keeps its copies.
     // load_experiment_config resolves a relative path against the config
-    // file's folder (the resolved config records the joined path).
+    // file's folder (the resolved config records the absolute joined path).
     std::vector<std::string> from;
 };
 

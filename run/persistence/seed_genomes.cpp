@@ -64,7 +64,7 @@ std::vector<GivenGenome> read_given_genomes(const std::vector<std::string>& sour
     std::vector<GivenGenome> genomes;
     for (const std::string& source : sources) {
         std::error_code ec;
-        if (!fs::exists(source, ec)) throw IoError("--from " + source + ": no such file or directory");
+        if (!fs::exists(source, ec)) throw IoError("run.from / --from " + source + ": no such file or directory");
         if (!fs::is_directory(source, ec))
             genomes.push_back({load_genome_for(layers, source).params, source});
         else if (fs::exists(fs::path(source) / "checkpoint.json", ec))
