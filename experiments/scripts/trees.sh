@@ -67,8 +67,7 @@ echo "contact sheet: $out/trees.png" >&2
 if [ "${PLAIN:-1}" != 0 ]; then
   # The same config without the signals: what they are worth to evolution.
   python3 - "$out/tree-plain.config.json" <<'PY'
-import json, sys
-import os
+import json, os, sys
 config = json.load(open("configs/tree.json"))
 for key in ("exposure", "signal_diffusion"):
     config["growth"].pop(key, None)
