@@ -9,7 +9,10 @@ set -euo pipefail
 exe=$1 tree=$2 pairs=${3:-2}
 if [ ! -x "$tree/build/morphogen" ]; then
   git worktree add --detach "$tree" HEAD
-  sed -i 's/branching_shoot_bias = 5.0/branching_shoot_bias = 0.0/' "$tree/core/growth/random_genome_centre.hpp"
+  centre="$tree/core/growth/random_genome_centre.hpp"
+  sed -i 's/branching_shoot_bias = 5.0/branching_shoot_bias = 0.0/' "$centre"
+  # a renamed or re-valued constant would silently bench the centred draw twice
+  grep -q 'branching_shoot_bias = 0.0' "$centre" || { echo "side_by_side.sh: cannot set the centre to 0 in $centre" >&2; exit 1; }
   (cd "$tree" && scripts/build.sh release morphogen >/dev/null)
 fi
 echo "| config | draw | collide_fraction | mean final vertices |"
